@@ -53,4 +53,6 @@ std::string to_string(const Circle& c) {
          to_string(c.v.y()) + ", " + to_string(c.r) + ")";
 }
 
+std::ostream& operator<<(std::ostream& os, const Circle& c) { return os << to_string(c); }
+
 }  // namespace circles::spec

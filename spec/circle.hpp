@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstddef>
+#include <ostream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -51,7 +52,9 @@ Circle from_doubles(const std::array<double, 5>& fields, std::size_t index, Radi
 // The five coordinates of c, each rounded to the nearest double (see nearest_double).
 std::array<double, 5> nearest_doubles(const Circle& c);
 
-// "(px, py, vx, vy, r)" with exact rationals.
+// "(px, py, vx, vy, r)" with exact rationals; operator<< writes the same, so GoogleTest and RapidCheck print
+// circles readably in failures.
 std::string to_string(const Circle& c);
+std::ostream& operator<<(std::ostream& os, const Circle& c);
 
 }  // namespace circles::spec

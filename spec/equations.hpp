@@ -45,6 +45,7 @@ struct Indexed {
   std::size_t k;
   Circle c;
   friend bool operator==(const Indexed& a, const Indexed& b) { return a.k == b.k && a.c == b.c; }
+  friend std::ostream& operator<<(std::ostream& os, const Indexed& x) { return os << '#' << x.k << ' ' << x.c; }
 };
 
 // The lexicographic comparison of (px, py, vx, vy, r): negative, zero or positive as a <, =, > b.
@@ -177,14 +178,15 @@ std::variant<World<E>, Undefined<E>> step(const World<E>& w_prev) {
   return w_n;
 }
 
-// (1) D = {w_n}, n = 0, 1, ...: the worlds w_0 … w_n, or fewer when a step is undefined; then `undefined`
-// says which circles of the last world met it.
+// The worlds w_0 … w_n of D, or fewer when a step is undefined; then `undefined` says which circles of the
+// last world met it.
 template <class E>
 struct Trajectory {
   std::vector<World<E>> w;
   std::optional<Undefined<E>> undefined;
 };
 
+// (1) D = {w_n}, n = 0, 1, ...: the first n + 1 worlds, w_0 given and each next one by `step`.
 template <class E>
 Trajectory<E> D(const World<E>& w_0, std::size_t n) {
   Trajectory<E> t{{w_0}, std::nullopt};

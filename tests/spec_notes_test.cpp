@@ -1,0 +1,152 @@
+// One test per note of docs/spec-notes.md: each shows the defect, ambiguity or surprise on its minimal
+// exact example world and pins the chosen resolution, so it fails if the documented behaviour changes.
+// The note's heading anchor is the test's name.
+#include "spec/oracle.hpp"
+
+#include <gtest/gtest.h>
+
+#include <type_traits>
+
+namespace circles::spec {
+namespace {
+
+Circle at(const Q& px, const Q& py, const Q& r) { return circle(px, py, 0, 0, r); }
+
+const LiteralWorld& defined(const std::variant<LiteralWorld, Undefined<Circle>>& step_result) {
+  return std::get<LiteralWorld>(step_result);
+}
+
+Vec2 momentum(const Sequence& w) {
+  Vec2 total(0, 0);
+  for (const Circle& c : w) total += c.v;  // unit masses (Note 1, ii)
+  return total;
+}
+
+// d-for-m: (8) is written with d, which is defined nowhere; reading it as m makes e the least element.
+TEST(spec_notes, d_for_m) {
+  const Circle lo = circle(0, 0, -1, 0, 1), hi = circle(1, 0, 0, 0, 1);
+  const LiteralWorld S{hi, lo};
+  ASSERT_EQ(e(at(5, 5, 1), S), lo);
+  for (const Circle& a : S) EXPECT_EQ(m(*e(at(5, 5, 1), S), a), lo);
+}
+
+// partial-order-minimum: (6) is a partial order, so (7) is not commutative and (8) may have no answer.
+TEST(spec_notes, partial_order_minimum) {
+  const Circle c = at(0, 0, 1), a = circle(0, 2, 0, -60, 1), b = circle(2, 0, -60, 0, 1);
+  EXPECT_EQ(m(a, b), b);  // not commutative:
+  EXPECT_EQ(m(b, a), a);  // each argument order "wins"
+  const auto literal = literal_step(literal_world({c, a, b}));
+  ASSERT_TRUE(std::holds_alternative<Undefined<Circle>>(literal));
+  EXPECT_EQ(std::get<Undefined<Circle>>(literal).at.at(0).c, c);
+  // Resolved: a = (0, 2, …) <lex b = (2, 0, …), so c takes v_a = (0, −60) and moves to (0, −1).
+  EXPECT_EQ(resolved_step({c, a, b}).at(0), circle(0, -1, 0, -60, 1));
+}
+
+// sets-merge-circles: the worlds are sets, so two circles whose images are equal become one circle.
+TEST(spec_notes, sets_merge_circles) {
+  // c1 and c2 share p and r; both touch d, the least circle of each one's S, so both become (0, 0, 0, 0, 1).
+  const Circle d = at(-2, 0, 1), c1 = circle(0, 0, 60, 0, 1), c2 = circle(0, 0, 120, 0, 1);
+  const LiteralWorld w_1 = defined(literal_step(literal_world({d, c1, c2})));
+  EXPECT_EQ(w_1, (LiteralWorld{at(0, 0, 1), circle(-1, 0, 60, 0, 1)}));
+  // Resolved: three circles stay three.
+  EXPECT_EQ(resolved_step({d, c1, c2}), (Sequence{circle(-1, 0, 60, 0, 1), at(0, 0, 1), at(0, 0, 1)}));
+  // And already in w_0: a set holds a duplicate once.
+  EXPECT_EQ(literal_world({d, d}).size(), 1u);
+}
+
+// value-identity: "x ≠ c" compares values, so a circle never collides with its exact twin.
+TEST(spec_notes, value_identity) {
+  // Twins t at (0, 0) moving at (60, 0) touch b at rest at (2, 0).
+  const Circle t = circle(0, 0, 60, 0, 1), b = at(2, 0, 1);
+  // Literal: the twins are one circle; it sees only b, takes v_b = 0 and stays; b takes v_t.
+  EXPECT_EQ(defined(literal_step(literal_world({t, t, b}))), (LiteralWorld{at(0, 0, 1), circle(3, 0, 60, 0, 1)}));
+  // Resolved: each twin also sees the other, which is less than b, so it keeps (60, 0) and moves on.
+  EXPECT_EQ(resolved_step({t, t, b}),
+            (Sequence{circle(1, 0, 60, 0, 1), circle(1, 0, 60, 0, 1), circle(3, 0, 60, 0, 1)}));
+}
+
+// dt-not-binary: Δt = 1/60 has no binary floating-point form.
+TEST(spec_notes, dt_not_binary) {
+  EXPECT_NE(exact(1.0 / 60.0), dt);
+  // Sixty exact steps at v = 1 reach p = 1; sixty double steps p + v·RN(1/60) do not.
+  const auto t = D(literal_world({circle(0, 0, 1, 0, 1)}), 60);
+  EXPECT_EQ(t.w.back().begin()->p.x(), 1);
+  double p = 0;
+  for (int n = 0; n < 60; ++n) p = p + 1.0 * (1.0 / 60.0);
+  EXPECT_NE(p, 1.0);
+  // The oracle's rounded step rounds once, at the end of each step: RN(0 + 1/60) = RN(1/60).
+  EXPECT_EQ(resolved_step_rounded({{0, 0, 1, 0, 1}}).at(0)[0], 1.0 / 60.0);
+}
+
+// momentum-not-conserved: with three or more contacts velocities are copied one way.
+TEST(spec_notes, momentum_not_conserved) {
+  // a ≤ b, so c takes v_a = 0; a and b each see only c and take v_c = (60, 0).
+  const Sequence w{at(-2, 0, 1), circle(0, 0, 60, 0, 1), circle(2, 0, 120, 0, 1)};
+  const Sequence next = resolved_step(w);
+  EXPECT_EQ(next, (Sequence{circle(-1, 0, 60, 0, 1), at(0, 0, 1), circle(3, 0, 60, 0, 1)}));
+  EXPECT_EQ(momentum(w), Vec2(180, 0));
+  EXPECT_EQ(momentum(next), Vec2(120, 0));
+  // The literal profile agrees here: every e is defined and nothing merges.
+  EXPECT_EQ(defined(literal_step(literal_world(w))), (LiteralWorld{next.begin(), next.end()}));
+}
+
+// stuck-overlap: overlapping circles swap velocities every step and never separate.
+TEST(spec_notes, stuck_overlap) {
+  // Moving apart at ±60 while overlapping: each takes the other's velocity, so they cross each step.
+  const Circle a = circle(0, 0, -60, 0, 1), b = circle(1, 0, 60, 0, 1);
+  // As a set the world is a fixed point: the images of a and b are b and a.
+  const auto t = D(literal_world({a, b}), 10);
+  ASSERT_EQ(t.w.size(), 11u);
+  for (const LiteralWorld& w_n : t.w) EXPECT_EQ(w_n, t.w[0]);
+  // As a sequence the two circles trade places every step, period 2, always overlapping.
+  EXPECT_EQ(resolved_step({a, b}), (Sequence{b, a}));
+  EXPECT_EQ(resolved_step(resolved_step({a, b})), (Sequence{a, b}));
+  EXPECT_TRUE(intersect(a, b));
+}
+
+// glancing-contact: whole velocity vectors are exchanged, not their normal components.
+TEST(spec_notes, glancing_contact) {
+  // a moves along the common tangent; elastic disks would not interact (both normal components are 0).
+  const Sequence next = resolved_step({circle(0, 0, 0, 60, 1), at(2, 0, 1)});
+  EXPECT_EQ(next, (Sequence{at(0, 0, 1), circle(2, 1, 0, 60, 1)}));
+}
+
+// tunnelling: contacts are sampled at the steps, not swept between them.
+TEST(spec_notes, tunnelling) {
+  const auto t = D(literal_world({circle(0, 0, 600, 0, 1), at(5, 0, 1)}), 1);
+  ASSERT_EQ(t.w.size(), 2u);
+  EXPECT_EQ(t.w[1], (LiteralWorld{circle(10, 0, 600, 0, 1), at(5, 0, 1)}));  // passed through b untouched
+}
+
+// theorem-4-drops-v: the proof writes a = (p_a, r_a); intersect indeed reads no velocity.
+TEST(spec_notes, theorem_4_drops_v) {
+  const Circle a = circle(0, 0, 7, 7, 1), b = circle(2, 0, -3, 5, 1);
+  EXPECT_TRUE(intersect(a, b));
+  EXPECT_TRUE(intersect(circle(0, 0, 0, 0, 1), circle(2, 0, 100, -100, 1)));
+  EXPECT_TRUE(intersect(a, a));  // reflexive: |0| ≤ r_a + r_a, where the proof writes r_a + r_b
+  EXPECT_EQ(intersect(a, b), intersect(b, a));
+}
+
+// r-plus: C takes r ∈ ℝ⁺, the proof of Theorem 4 takes r ≥ 0.
+TEST(spec_notes, r_plus) {
+  EXPECT_THROW(literal_world({at(0, 0, 0)}), OutsideC);
+  EXPECT_EQ(resolved_step({at(0, 0, 0), circle(0, 0, 60, 0, 0)}),
+            (Sequence{circle(1, 0, 60, 0, 0), at(0, 0, 0)}));  // coincident points touch and swap
+  EXPECT_THROW(resolved_step({at(0, 0, -1)}), OutsideC);
+}
+
+// i-returns-a-set: i is typed C × P(C) → C but returns a set of circles.
+TEST(spec_notes, i_returns_a_set) {
+  static_assert(std::is_same_v<decltype(i(std::declval<Circle>(), std::declval<LiteralWorld>())), LiteralWorld>);
+  const Circle c = at(0, 0, 1);
+  EXPECT_EQ(i(c, LiteralWorld{c, at(1, 0, 1), at(0, 1, 1)}).size(), 2u);
+}
+
+// e-ignores-c: e(c, S) never reads c.
+TEST(spec_notes, e_ignores_c) {
+  const LiteralWorld S{at(0, 0, 1), at(1, 1, 1)};
+  EXPECT_EQ(e(at(100, 100, 1), S), e(at(-100, 0, 7), S));
+}
+
+}  // namespace
+}  // namespace circles::spec
