@@ -1,0 +1,139 @@
+// Keeps docs/ and the code in step: docs/math.md lists each equation with the oracle functions that
+// transcribe it, docs/spec-notes.md lists the notes, and both name tests. These tests read the files.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+const std::filesystem::path root = CIRCLES_SOURCE_DIR;
+
+std::vector<std::string> lines_of(const std::filesystem::path& relative) {
+  std::ifstream in(root / relative);
+  if (!in) throw std::runtime_error("cannot read " + (root / relative).string());
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+std::string text_of(const std::filesystem::path& relative) {
+  std::string all;
+  for (const std::string& line : lines_of(relative)) all += line + '\n';
+  return all;
+}
+
+// Equation number → oracle functions, from the headings "## (N) title — `spec::f`, `spec::g`" of math.md.
+std::map<int, std::set<std::string>> equations_in_math_md() {
+  std::map<int, std::set<std::string>> equations;
+  const std::regex heading(R"(^## \((\d+)\) .*)"), function(R"(`spec::(\w+)`)");
+  for (const std::string& line : lines_of("docs/math.md")) {
+    std::smatch h;
+    if (!std::regex_match(line, h, heading)) continue;
+    auto& functions = equations[std::stoi(h[1])];
+    for (std::sregex_iterator f(line.begin(), line.end(), function), end; f != end; ++f) functions.insert((*f)[1]);
+  }
+  return equations;
+}
+
+// Function name → the equation number its definition opens with in spec/equations.hpp: the first line of the
+// comment block right above the definition (a template header in between is allowed) reads "// (N) ...".
+std::multimap<std::string, int> functions_in_equations_hpp() {
+  const std::vector<std::string> lines = lines_of("spec/equations.hpp");
+  const std::regex definition(R"(^(?:inline |\S.*\s)?[\w:<>]+ (\w+)\(.*\{.*)"),
+      opener(R"(^// \((\d+)\) .*)");
+  std::multimap<std::string, int> functions;
+  for (std::size_t n = 0; n < lines.size(); ++n) {
+    std::smatch d;
+    if (lines[n].starts_with("//") || !std::regex_match(lines[n], d, definition)) continue;
+    std::size_t k = n;
+    if (k > 0 && lines[k - 1].starts_with("template")) --k;
+    if (k == 0 || !lines[k - 1].starts_with("//")) continue;  // not an equation: no comment block
+    while (k > 0 && lines[k - 1].starts_with("//")) --k;
+    std::smatch o;
+    if (std::regex_match(lines[k], o, opener)) functions.emplace(d[1], std::stoi(o[1]));
+  }
+  return functions;
+}
+
+// Every TEST(suite, name) and RC_GTEST_PROP(suite, name, ...) in tests/, as "suite.name".
+std::set<std::string> tests_in_repository() {
+  std::set<std::string> tests;
+  const std::regex test(R"((?:TEST|RC_GTEST_PROP)\((\w+), (\w+)[,)])");
+  for (const auto& entry : std::filesystem::directory_iterator(root / "tests")) {
+    if (entry.path().extension() != ".cpp") continue;
+    const std::string text = text_of(std::filesystem::relative(entry.path(), root));
+    for (std::sregex_iterator t(text.begin(), text.end(), test), end; t != end; ++t)
+      tests.insert((*t)[1].str() + "." + (*t)[2].str());
+  }
+  return tests;
+}
+
+// Every `suite.name` in backquotes in a doc.
+std::set<std::string> tests_named_in(const std::filesystem::path& doc) {
+  const std::string text = text_of(doc);
+  std::set<std::string> named;
+  const std::regex name(R"(`([a-z0-9_]+\.[a-z0-9_]+)`)");
+  for (std::sregex_iterator t(text.begin(), text.end(), name), end; t != end; ++t) named.insert((*t)[1]);
+  return named;
+}
+
+TEST(docs, math_md_lists_each_of_the_nine_equations) {
+  std::set<int> numbers;
+  for (const auto& [n, functions] : equations_in_math_md()) {
+    numbers.insert(n);
+    EXPECT_FALSE(functions.empty()) << "equation (" << n << ") names no spec:: function";
+  }
+  EXPECT_EQ(numbers, (std::set<int>{1, 2, 3, 4, 5, 6, 7, 8, 9}));
+}
+
+TEST(docs, each_function_math_md_names_opens_with_its_equation_number_in_spec) {
+  const auto in_code = functions_in_equations_hpp();
+  for (const auto& [n, functions] : equations_in_math_md())
+    for (const std::string& f : functions) {
+      const auto [first, last] = in_code.equal_range(f);
+      ASSERT_NE(first, last) << "docs/math.md names spec::" << f << " for (" << n
+                             << "), but spec/equations.hpp has no definition of it under a '// (N)' comment";
+      for (auto it = first; it != last; ++it)
+        EXPECT_EQ(it->second, n) << "spec::" << f << " opens with (" << it->second << "), docs/math.md says (" << n << ")";
+    }
+}
+
+TEST(docs, each_equation_in_spec_is_in_math_md) {
+  const auto in_doc = equations_in_math_md();
+  for (const auto& [f, n] : functions_in_equations_hpp()) {
+    ASSERT_TRUE(in_doc.contains(n)) << "spec/equations.hpp has (" << n << ") but docs/math.md does not";
+    EXPECT_TRUE(in_doc.at(n).contains(f)) << "docs/math.md's (" << n << ") does not name spec::" << f;
+  }
+}
+
+TEST(docs, every_test_the_docs_name_exists) {
+  const std::set<std::string> tests = tests_in_repository();
+  for (const char* doc : {"docs/math.md", "docs/spec-notes.md"})
+    for (const std::string& t : tests_named_in(doc)) EXPECT_TRUE(tests.contains(t)) << doc << " names " << t;
+}
+
+TEST(docs, each_spec_note_has_its_test_and_each_test_its_note) {
+  std::set<std::string> notes;
+  const std::regex heading(R"(^## ([a-z0-9-]+)$)");
+  for (const std::string& line : lines_of("docs/spec-notes.md")) {
+    std::smatch h;
+    if (!std::regex_match(line, h, heading)) continue;
+    std::string name = "spec_notes." + h[1].str();
+    std::replace(name.begin(), name.end(), '-', '_');
+    notes.insert(name);
+  }
+  EXPECT_GE(notes.size(), 10u);
+  std::set<std::string> tests;
+  for (const std::string& t : tests_in_repository())
+    if (t.starts_with("spec_notes.")) tests.insert(t);
+  EXPECT_EQ(notes, tests);
+}
+
+}  // namespace
