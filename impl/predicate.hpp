@@ -1,0 +1,118 @@
+// The intersect predicate (3) of the seed over doubles, exact, in tiers (after Shewchuk and CGAL).
+//
+//   Invariant: intersect_exact(a…, b…) == (3) on the exact values of the doubles, for all finite inputs:
+//              a intersect b ⟺ |p_b − p_a| ≤ r_a + r_b ⟺ S ≥ 0 ∧ F ≥ 0, with
+//              S = r_a + r_b,  X = b_x − a_x,  Y = b_y − a_y,  F = S² − X² − Y²  (all exact reals).
+//   It equals spec::intersect on the exact values, negative radii included (then S < 0 gives false).
+//
+// Tiers:
+//   intersect_naive      s² >= dx² + dy² in doubles. Wrong near tangency, on overflow and underflow.
+//   intersect_filter     Stage A: the same squares plus a certified error bound; decides when it can.
+//   intersect_rescaled   Stage A': scales dx, dy, s into [1, 4) first: no overflow, negligible underflow.
+//   intersect_gmp        Stage B: exact integers (GMP). Always decides.
+//   intersect_exact      Stage A inline, then A' (only where rescaling can help) and B out of line.
+//
+// The proofs of the bounds are in docs/predicate.md; the constants below carry their derivation in brief,
+// and tests/predicate_test.cpp recomputes each one from it in exact rational arithmetic.
+// Notation: u = 2^-53 (unit roundoff), η = 2^-1075 (half the least subnormal: the absolute error of a
+// product that underflows). Sums and differences of doubles have no absolute error: a result below 2^-1022
+// is a multiple of 2^-1074 and so exact.
+//
+// The proofs model every operation as exact or rounded once, so they hold with or without FMA
+// contraction; the project still compiles this with -ffp-contract=off (circles::numeric). They need IEEE
+// binary64 semantics otherwise: -ffast-math (reassociation, no infinities) would void every bound.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+
+namespace circles::impl {
+
+// A filter's answer: the sign of F decided, or not.
+enum class Decision : std::uint8_t { disjoint = 0, intersect = 1, undecided = 2 };
+
+// Which stage gave intersect_exact its answer.
+enum class Stage : std::uint8_t { filter, rescaled, gmp };
+
+// kRelative = 2^-50 = 8u: the bound's factor on M = RN(P + Q), the computed S² + X² + Y².
+// |D − F| ≤ k·M + γ·(b + η), k = ((1+u)^5 − 1)/(1−u)^5 ≈ 5.0000000000000036u: the X² term passes five
+// roundings (dx, twice as it is squared; the square; the sum of squares; D) and M may sit five roundings
+// low. The bound, computed as RN(RN(M·2^-50) + c) ≥ (M·2^-50 − η + c)(1 − u), covers k·M when
+// 2^-50(1 − u) ≥ k: 8u against the design note's 5.0001u, tight to a factor 1.6.
+inline constexpr double kRelative = 0x1p-50;
+
+// kAbsolute = 2^-1072 = 8η: Stage A's absolute term c. Inputs dx, dy, s carry no absolute error (b = 0);
+// the three squares may underflow, each by ≤ η, and those errors pass through at most three roundings:
+// γ = 3k + 3(1+u)^3 ≈ 3. The bound needs (c − η)(1 − u) ≥ γη, i.e. c ≥ c_min ≈ 4.0000000000000027η;
+// 2^-1073 = 4η is just short, 2^-1072 = 8η is the least power of two above: tight to a factor 2.
+inline constexpr double kAbsolute = 0x1p-1072;
+
+// kAbsoluteRescaled = 2^-1070 = 32η: the absolute term of Stage A'. After rescaling, |dx|, |dy|, s < 4 and
+// each carries an absolute error a ≤ η(1 + 2^-1020) (η from the scaling, 2η·2^-1022 from halving when a
+// difference overflowed) on top of its rounding; a square then errs by b = 2Ra(1+u) + a², R = (4 + a)/(1−u),
+// so b ≈ 8η, and c_min = η + γ(b + η)/(1 − u) ≈ 28η. 32η is the least power of two above: tight to 8/7.
+inline constexpr double kAbsoluteRescaled = 0x1p-1070;
+
+// kRescaleBelow = 2^-900: intersect_exact tries Stage A' only when M is infinite or below this. It is a
+// speed choice, not a correctness one (every stage is exact whatever it is): above 2^-900 Stage A's
+// absolute term is under 2^-122·M·2^-50, so rescaling would give the same verdict and only cost time.
+inline constexpr double kRescaleBelow = 0x1p-900;
+
+// The certified sign of F = S² − X² − Y², from dx, dy, s that are X, Y, S rounded once each (plus, in
+// Stage A', the absolute error kAbsoluteRescaled allows for). `absolute` is kAbsolute or kAbsoluteRescaled.
+// Branch-free so that a loop over it vectorizes: both comparisons are always made and combined as integers
+// (GCC does not if-convert a floating-point comparison that the source makes conditionally).
+inline Decision sign_filter(double dx, double dy, double s, double absolute) {
+  const double p = s * s;
+  const double q = dx * dx + dy * dy;
+  const double d = p - q;
+  const double m = p + q;  // +inf on any overflow, and then the bound is +inf: undecided
+  const double bound = m * kRelative + absolute;
+  const bool decided = std::fabs(d) > bound;
+  const bool positive = d > 0;
+  // intersect (1) if decided and positive, disjoint (0) if decided and not, undecided (2) otherwise
+  return static_cast<Decision>((decided & positive) | (!decided) << 1);
+}
+
+// Naive: (ar + br)² >= dx² + dy² in doubles. Kept for benchmarks only.
+inline bool intersect_naive(double ax, double ay, double ar, double bx, double by, double br) {
+  const double dx = bx - ax;
+  const double dy = by - ay;
+  const double s = ar + br;
+  return s * s >= dx * dx + dy * dy;
+}
+
+// Stage A. RN(ar + br) has the sign of S (a sum of doubles rounds to 0 only when it is 0), so s < 0 ⟺ S < 0.
+// Branch-free like sign_filter: S < 0 turns any answer into disjoint (0).
+inline Decision intersect_filter(double ax, double ay, double ar, double bx, double by, double br) {
+  const double s = ar + br;
+  const bool negative = s < 0;
+  return static_cast<Decision>(static_cast<int>(sign_filter(bx - ax, by - ay, s, kAbsolute)) * !negative);
+}
+
+// Stage A': rescaled filter. Decides every input that is not within about 2^-50 of tangency.
+Decision intersect_rescaled(double ax, double ay, double ar, double bx, double by, double br);
+
+// Stage B: exact, always.
+bool intersect_gmp(double ax, double ay, double ar, double bx, double by, double br);
+
+// Stages A' (when M is infinite or below kRescaleBelow) and B, for inputs Stage A left undecided.
+// Sets `stage` to the stage that decided.
+bool intersect_fallback(double ax, double ay, double ar, double bx, double by, double br, Stage& stage);
+
+// The exact predicate, reporting which stage decided.
+inline bool intersect_exact(double ax, double ay, double ar, double bx, double by, double br, Stage& stage) {
+  if (const Decision d = intersect_filter(ax, ay, ar, bx, by, br); d != Decision::undecided) [[likely]] {
+    stage = Stage::filter;
+    return d == Decision::intersect;
+  }
+  return intersect_fallback(ax, ay, ar, bx, by, br, stage);
+}
+
+// The exact predicate: (3) on the exact values of the doubles, for all finite inputs.
+inline bool intersect_exact(double ax, double ay, double ar, double bx, double by, double br) {
+  Stage stage;
+  return intersect_exact(ax, ay, ar, bx, by, br, stage);
+}
+
+}  // namespace circles::impl
