@@ -1,6 +1,8 @@
 // Stages A' and B of the exact intersect predicate (predicate.hpp; proofs in docs/predicate.md).
 #include "impl/predicate.hpp"
 
+#include "impl/detail/exact_int.hpp"
+
 #include <gmp.h>
 
 #include <algorithm>
@@ -12,41 +14,14 @@
 namespace circles::impl {
 namespace {
 
+using detail::Dyadic;
+using detail::dyadic;
+
 // The biased exponent field of a double: 0 for zero and subnormals, 1..2046 for normals.
 int biased_exponent(double x) { return static_cast<int>((std::bit_cast<std::uint64_t>(x) >> 52) & 0x7ff); }
 
 // 2^k for −1022 ≤ k ≤ 1023, exactly (a normal double, built from its bits).
 double power_of_two(int k) { return std::bit_cast<double>(static_cast<std::uint64_t>(k + 1023) << 52); }
-
-// x = m·2^e with m odd (or x = 0: m = 0, e = INT_MAX). |m| < 2^53 and e ≥ −1074.
-struct Dyadic {
-  std::int64_t m;
-  int e;
-};
-Dyadic dyadic(double x) {
-  const auto bits = std::bit_cast<std::uint64_t>(x);
-  const int biased = biased_exponent(x);
-  const std::uint64_t fraction = bits & ((std::uint64_t{1} << 52) - 1);
-  const std::uint64_t m =
-      biased == 0 ? fraction : fraction | std::uint64_t{1} << 52;  // |x| = m·2^(max(biased, 1) − 1075)
-  if (m == 0) return {0, INT_MAX};
-  const int zeros = std::countr_zero(m);
-  const auto odd = static_cast<std::int64_t>(m >> zeros);
-  return {bits >> 63 ? -odd : odd, std::max(biased, 1) - 1075 + zeros};
-}
-
-// An owned mpz_t.
-class Integer {
- public:
-  Integer() { mpz_init(v_); }
-  ~Integer() { mpz_clear(v_); }
-  Integer(const Integer&) = delete;
-  Integer& operator=(const Integer&) = delete;
-  operator mpz_ptr() { return v_; }
-
- private:
-  mpz_t v_;
-};
 
 static_assert(sizeof(long) >= sizeof(std::int64_t), "mpz_set_si must take a 53-bit significand");
 
@@ -81,14 +56,15 @@ Decision intersect_rescaled(double ax, double ay, double ar, double bx, double b
 bool intersect_gmp(double ax, double ay, double ar, double bx, double by, double br) {
   const std::array<Dyadic, 6> x{dyadic(ax), dyadic(ay), dyadic(ar), dyadic(bx), dyadic(by), dyadic(br)};
   int least = INT_MAX;
-  for (const Dyadic& d : x) least = std::min(least, d.e);
+  for (const Dyadic& d : x)
+    if (d.m != 0) least = std::min(least, d.e);  // zeros have no exponent
   if (least == INT_MAX) return true;  // all zero
-  thread_local std::array<Integer, 4> z;
+  thread_local std::array<detail::Mpz, 4> z;
   const auto set = [least](mpz_ptr n, const Dyadic& d) {
     mpz_set_si(n, static_cast<long>(d.m));
     if (d.m != 0) mpz_mul_2exp(n, n, static_cast<mp_bitcnt_t>(d.e - least));
   };
-  mpz_ptr s = z[0], dx = z[1], dy = z[2], t = z[3];
+  mpz_ptr s = z[0].get(), dx = z[1].get(), dy = z[2].get(), t = z[3].get();
   set(s, x[2]);
   set(t, x[5]);
   mpz_add(s, s, t);

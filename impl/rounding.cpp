@@ -5,6 +5,8 @@
 // happens only where std::fma is written.
 #include "impl/rounding.hpp"
 
+#include "impl/detail/exact_int.hpp"
+
 #include <gmp.h>
 
 #include <algorithm>
@@ -113,27 +115,11 @@ struct Fast {
   return exact_integer_round(p, v);
 }
 
-// A GMP integer that frees itself.
-class Mpz {
- public:
-  Mpz() { mpz_init(z_); }
-  ~Mpz() { mpz_clear(z_); }
-  Mpz(const Mpz&) = delete;
-  Mpz& operator=(const Mpz&) = delete;
-  mpz_ptr get() noexcept { return z_; }
-
- private:
-  mpz_t z_;
-};
-
 // binary64 format facts, from <limits>.
 constexpr long kDigits = std::numeric_limits<double>::digits;                       // 53 significant bits
 constexpr long kStoredBits = kDigits - 1;                                           // 52 of them stored
 constexpr long kTopBinade = std::numeric_limits<double>::max_exponent - 1;          // 2^1023 ≤ DBL_MAX
 constexpr long kQuantumExponent = std::numeric_limits<double>::min_exponent - kDigits;  // 2^-1074
-constexpr std::uint64_t kExponentField = 0x7ff;                                     // 11 bits
-constexpr std::uint64_t kStoredMask = (std::uint64_t{1} << kStoredBits) - 1;
-constexpr int kSignBit = 63;                                                        // 52 + 11
 static_assert(kStoredBits == 52 && kTopBinade == 1023 && kQuantumExponent == -1074);
 
 // 60 = 2^2·15: the exact integer path shifts by the power of two and divides by the odd part, which has
@@ -143,25 +129,6 @@ constexpr unsigned long kInverseDtOdd = 15;
 constexpr long kInverseDtOddBits = 4;
 static_assert((kInverseDtOdd << kInverseDtTwos) == 60 && kInverseDt == 60.0);
 static_assert((1UL << (kInverseDtOddBits - 1)) < kInverseDtOdd && kInverseDtOdd < (1UL << kInverseDtOddBits));
-
-// A finite double as m·2^k with |m| < 2^53 and k ≥ −1074.
-struct Scaled {
-  long m;
-  long k;
-};
-
-Scaled decompose(double x) noexcept {
-  static_assert(sizeof(long) == 8, "a 53-bit significand must fit in long (LP64)");
-  const std::uint64_t b = bits(x);
-  const auto biased = static_cast<long>((b >> kStoredBits) & kExponentField);
-  auto m = static_cast<long>(b & kStoredMask);
-  long k = kQuantumExponent;  // subnormal: biased exponent 0, no hidden bit
-  if (biased != 0) {
-    m += long{1} << kStoredBits;
-    k = biased - kTopBinade - kStoredBits;  // the bias is 1023 = kTopBinade
-  }
-  return {(b >> kSignBit) != 0 ? -m : m, k};
-}
 
 // One full block of the batch form: a loop of constant trip count over restrict pointers with no FP-valued
 // select (the result is chosen by integer masks on the bits), so GCC vectorizes it without versioning.
@@ -255,15 +222,16 @@ double certificate_bound(double e, double c) noexcept { return bound_of(e, c); }
 // operation: find k = ⌊log2 x⌋, the quantum 2^s with s = max(k − 52, −1074), then M = n·2^(F−s)/15 rounded
 // to nearest-even by integer division with a remainder tie test; x' = ±M·2^s.
 double exact_integer_round(double p, double v) noexcept {
-  const Scaled a = decompose(p);
-  const Scaled b = decompose(v);
-  const long E = std::min(a.k, b.k);
-  thread_local Mpz n, t, d, quot, rem;  // per-thread scratch: reusing the limbs halves the cost of a call
+  // A zero contributes nothing whatever its exponent, and every shift below stays non-negative.
+  const detail::Dyadic a = detail::dyadic(p);
+  const detail::Dyadic b = detail::dyadic(v);
+  const long E = std::min(a.e, b.e);
+  thread_local detail::Mpz n, t, d, quot, rem;  // per-thread scratch: reusing the limbs halves the cost of a call
   mpz_set_si(n.get(), a.m);
   mpz_mul_ui(n.get(), n.get(), kInverseDtOdd << kInverseDtTwos);
-  mpz_mul_2exp(n.get(), n.get(), static_cast<mp_bitcnt_t>(a.k - E));
+  mpz_mul_2exp(n.get(), n.get(), static_cast<mp_bitcnt_t>(a.e - E));
   mpz_set_si(t.get(), b.m);
-  mpz_mul_2exp(t.get(), t.get(), static_cast<mp_bitcnt_t>(b.k - E));
+  mpz_mul_2exp(t.get(), t.get(), static_cast<mp_bitcnt_t>(b.e - E));
   mpz_add(n.get(), n.get(), t.get());
   const int sign = mpz_sgn(n.get());
   if (sign == 0) return 0.0;
