@@ -40,6 +40,14 @@ TEST(spec_notes, partial_order_minimum) {
   EXPECT_EQ(std::get<Undefined<Circle>>(literal).at.at(0).c, c);
   // Resolved: a = (0, 2, …) <lex b = (2, 0, …), so c takes v_a = (0, −60) and moves to (0, −1).
   EXPECT_EQ(resolved_step({c, a, b}).at(0), circle(0, -1, 0, -60, 1));
+  // Even a Newton's cradle meets it: the middle ball touches the moving one, (0, 0, 60, 0, 1), and the one at
+  // rest, (4, 0, 0, 0, 1); positions compare one way and velocities the other.
+  const Circle moving = circle(0, 0, 60, 0, 1), middle = at(2, 0, 1), rest = at(4, 0, 1);
+  const auto cradle = literal_step(literal_world({moving, middle, rest}));
+  ASSERT_TRUE(std::holds_alternative<Undefined<Circle>>(cradle));
+  EXPECT_EQ(std::get<Undefined<Circle>>(cradle).at.at(0).c, middle);
+  // Resolved: the middle ball takes v of the moving one (px 0 < 4) and the moving one stops.
+  EXPECT_EQ(resolved_step({moving, middle, rest}), (Sequence{at(0, 0, 1), circle(3, 0, 60, 0, 1), at(4, 0, 1)}));
 }
 
 // sets-merge-circles: the worlds are sets, so two circles whose images are equal become one circle.
