@@ -28,14 +28,14 @@ void resolved_step_of_n_circles(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(resolved_step(w));
   state.SetItemsProcessed(state.iterations() * state.range(0));  // circle-steps
 }
-BENCHMARK(resolved_step_of_n_circles)->RangeMultiplier(4)->Range(4, 256);
+BENCHMARK(resolved_step_of_n_circles)->RangeMultiplier(2)->Range(4, 256);
 
 void literal_step_of_n_circles(benchmark::State& state) {
   const LiteralWorld w = literal_world(random_world(static_cast<std::size_t>(state.range(0)), 1));
   for (auto _ : state) benchmark::DoNotOptimize(literal_step(w));
   state.SetItemsProcessed(state.iterations() * state.range(0));
 }
-BENCHMARK(literal_step_of_n_circles)->RangeMultiplier(4)->Range(4, 256);
+BENCHMARK(literal_step_of_n_circles)->RangeMultiplier(2)->Range(4, 256);
 
 void nearest_double_of_a_step_result(benchmark::State& state) {
   const Q x = exact(123.456) + exact(-78.9) / 60;
