@@ -8,23 +8,6 @@ Circle circle(const Q& px, const Q& py, const Q& vx, const Q& vy, const Q& r) {
   return Circle{Vec2(px, py), Vec2(vx, vy), r};
 }
 
-const char* name(Field f) {
-  switch (f) {
-    case Field::px: return "px";
-    case Field::py: return "py";
-    case Field::vx: return "vx";
-    case Field::vy: return "vy";
-    case Field::r: return "r";
-  }
-  return "?";
-}
-
-OutsideC::OutsideC(std::size_t i, Field f, const std::string& reason)
-    : std::invalid_argument("circle " + std::to_string(i) + ", field " + name(f) + ": " + reason +
-                            " (not an element of C)"),
-      index(i),
-      field(f) {}
-
 void check_radius(const Circle& c, std::size_t index, Radii radii) {
   if (radii == Radii::positive && c.r <= 0)
     throw OutsideC(index, Field::r, "radius " + to_string(c.r) + " is not in R+ (r > 0, the literal profile)");
@@ -33,14 +16,8 @@ void check_radius(const Circle& c, std::size_t index, Radii radii) {
 }
 
 Circle from_doubles(const std::array<double, 5>& fields, std::size_t index, Radii radii) {
-  for (std::size_t k = 0; k < fields.size(); ++k) {
-    const double x = fields[k];
-    if (std::isnan(x)) throw OutsideC(index, Field(k), "NaN");
-    if (std::isinf(x)) throw OutsideC(index, Field(k), x > 0 ? "+infinity" : "-infinity");
-  }
-  const Circle c = circle(exact(fields[0]), exact(fields[1]), exact(fields[2]), exact(fields[3]), exact(fields[4]));
-  check_radius(c, index, radii);
-  return c;
+  check_doubles(fields, index, radii);
+  return circle(exact(fields[0]), exact(fields[1]), exact(fields[2]), exact(fields[3]), exact(fields[4]));
 }
 
 std::array<double, 5> nearest_doubles(const Circle& c) {

@@ -1,6 +1,7 @@
 // C, the set of circles (p, v, r), and the errors for inputs outside it.
 #pragma once
 
+#include "spec/outside_c.hpp"
 #include "spec/rational.hpp"
 
 #include <array>
@@ -25,28 +26,11 @@ struct Circle {
 // Shorthand for tests and scenes: (px, py, vx, vy, r), each exact.
 Circle circle(const Q& px, const Q& py, const Q& vx, const Q& vy, const Q& r);
 
-// The five coordinates in the protocol's order [px, py, vx, vy, r].
-enum class Field { px, py, vx, vy, r };
-const char* name(Field f);
-
-// An input that is not an element of C: NaN or infinity in any field, or a radius the profile refuses.
-// `index` is the circle's position in the input, `field` the coordinate at fault.
-class OutsideC : public std::invalid_argument {
- public:
-  OutsideC(std::size_t index, Field field, const std::string& reason);
-  std::size_t index;
-  Field field;
-};
-
-// Which radii belong to C. The seed writes r ∈ ℝ⁺ in the definition of C but uses r ≥ 0 in the proof of
-// Theorem 4 (spec-notes: "R+ or r >= 0"); the literal profile takes the definition, the resolved one the proof.
-enum class Radii { positive, non_negative };
-
 // Throws OutsideC unless c.r is allowed by `radii`. `index` names the circle in the message.
 void check_radius(const Circle& c, std::size_t index, Radii radii);
 
 // The circle with the exact values of five doubles [px, py, vx, vy, r].
-// Throws OutsideC naming `index` and the first non-finite field, or the radius refused by `radii`.
+// Throws OutsideC as check_doubles does.
 Circle from_doubles(const std::array<double, 5>& fields, std::size_t index, Radii radii);
 
 // The five coordinates of c, each rounded to the nearest double (see nearest_double).

@@ -37,12 +37,12 @@ TEST(from_doubles, names_the_sign_of_an_infinity) {
 TEST(from_doubles, takes_radius_zero_only_in_the_resolved_profile) {
   EXPECT_EQ(from_doubles({0, 0, 0, 0, 0}, 0, Radii::non_negative).r, 0);
   EXPECT_STREQ(outside_c([] { from_doubles({0, 0, 0, 0, -0.0}, 3, Radii::positive); }).what(),
-               "circle 3, field r: radius 0 is not in R+ (r > 0, the literal profile) (not an element of C)");
+               "circle 3, field r: radius -0 is not in R+ (r > 0, the literal profile) (not an element of C)");
 }
 
 TEST(from_doubles, rejects_a_negative_radius_in_both_profiles) {
   EXPECT_STREQ(outside_c([] { from_doubles({0, 0, 0, 0, -0.5}, 1, Radii::non_negative); }).what(),
-               "circle 1, field r: radius -1/2 is negative (r >= 0, the resolved profile) (not an element of C)");
+               "circle 1, field r: radius -0.5 is negative (r >= 0, the resolved profile) (not an element of C)");
 }
 
 TEST(resolved_step, names_the_index_of_a_circle_with_negative_radius) {
