@@ -18,7 +18,12 @@ int main(int argc, char** argv) {
       ->check(CLI::ExistingFile);
   oracle->add_option("--steps", steps, "Number of steps")->capture_default_str()->check(CLI::Range(0, 1000000));
 
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    // --help and --version exit 0; every usage error exits 2, like every other bad input.
+    return app.exit(e) == 0 ? 0 : 2;
+  }
 
   try {
     const bool from_file = !scene_path.empty();

@@ -64,7 +64,8 @@ void report_oracle(const std::vector<Circle>& scene, const std::string& scene_na
   out << std::setprecision(std::numeric_limits<double>::max_digits10);
   out << "circles: the exact oracle on " << scene_name << " (" << scene.size() << " circles, " << steps
       << " steps of Δt = 1/60)\n"
-      << "No engine is built yet: this runs the oracle alone, in exact rationals.\n\n";
+      << "No engine is checked here yet (issue 3 wires the double engine in): this runs the oracle alone, in exact\n"
+      << "rationals.\n\n";
 
   const auto resolved = spec::D(spec::resolved_world(scene), steps);
   out << "resolved profile (the default: circles by index, lexicographic minimum)\n";
