@@ -31,11 +31,13 @@
 #include "properties/generators.hpp"
 #include "spec/circle.hpp"
 #include "spec/oracle.hpp"
+#include "tests/thrown.hpp"
 
 namespace circles::impl {
 namespace {
 
 using Circles = std::vector<std::array<double, 5>>;
+using circles::testing::thrown;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr const char* kFieldName[] = {"px", "py", "vx", "vy", "r"};
@@ -426,14 +428,11 @@ TEST(engine, throws_position_overflow_naming_the_circle_and_leaves_the_world_unc
   const Circles w{{-m, -m, 0, 0, 0}, {0, 0, 1, 1, 1}, {0, m, 0, m, 1}};
   EXPECT_TRUE(std::isinf(spec::resolved_step_rounded(w)[2][1]));
   Engine e{World{w}};
-  try {
-    e.step();
-    ADD_FAILURE() << "no PositionOverflow";
-  } catch (const PositionOverflow& error) {
-    EXPECT_EQ(error.index, 2u);
-    EXPECT_STREQ(error.field, "py");
-    EXPECT_NE(std::string(error.what()).find("circle 2, field py"), std::string::npos) << error.what();
-  }
+  const auto own = thrown<PositionOverflow>([&] { e.step(); });
+  ASSERT_TRUE(own);
+  EXPECT_EQ(own->index, 2u);
+  EXPECT_STREQ(own->field, "py");
+  EXPECT_NE(std::string(own->what()).find("circle 2, field py"), std::string::npos) << own->what();
   EXPECT_EQ(e.world().circles(), w);
   // Circle 1 overflows by the velocity it takes from circle 2, which it touches; circle 2 takes circle 1's
   // velocity 0 and stays. Circle 3 overflows in x by its own velocity; the error names the first, circle 1.
@@ -441,13 +440,10 @@ TEST(engine, throws_position_overflow_naming_the_circle_and_leaves_the_world_unc
   const Circles oracle = spec::resolved_step_rounded(taken);
   EXPECT_TRUE(std::isinf(oracle[1][1]));
   EXPECT_EQ(oracle[2][1], m);
-  try {
-    Engine{World{taken}}.step();
-    ADD_FAILURE() << "no PositionOverflow";
-  } catch (const PositionOverflow& error) {
-    EXPECT_EQ(error.index, 1u);
-    EXPECT_STREQ(error.field, "py");
-  }
+  const auto first = thrown<PositionOverflow>([&] { Engine{World{taken}}.step(); });
+  ASSERT_TRUE(first);
+  EXPECT_EQ(first->index, 1u);
+  EXPECT_STREQ(first->field, "py");
   EXPECT_THROW(step_all_pairs(World{taken}), PositionOverflow);
   EXPECT_THROW(step_all_pairs(World{taken}), std::overflow_error);
   // At the threshold: DBL_MAX + tie/60 is the midpoint 2^1024(1 − 2^-54), which rounds (to even) to +infinity;
@@ -460,32 +456,22 @@ TEST(engine, throws_position_overflow_naming_the_circle_and_leaves_the_world_unc
   EXPECT_EQ(spec::resolved_step_rounded(below)[0][0], m);
   const Circles at{{1, 2, 0, 0, 0}, {m, 0, tie, 0, 0}};
   EXPECT_TRUE(std::isinf(spec::resolved_step_rounded(at)[1][0]));
-  try {
-    Engine{World{at}}.step();
-    ADD_FAILURE() << "no PositionOverflow";
-  } catch (const PositionOverflow& error) {
-    EXPECT_EQ(error.index, 1u);
-    EXPECT_STREQ(error.field, "px");
-  }
+  const auto tie_overflows = thrown<PositionOverflow>([&] { Engine{World{at}}.step(); });
+  ASSERT_TRUE(tie_overflows);
+  EXPECT_EQ(tie_overflows->index, 1u);
+  EXPECT_STREQ(tie_overflows->field, "px");
 }
 
 TEST(engine, world_refuses_circles_outside_c_naming_index_and_field) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   // The oracle's own error, with the same circle, field and message as the oracle gives for the same world.
   const auto refused = [](const Circles& w, std::size_t index, spec::Field field) {
-    try {
-      World{w};
-      ADD_FAILURE() << "accepted\n" << show(w);
-    } catch (const spec::OutsideC& error) {
-      EXPECT_EQ(error.index, index);
-      EXPECT_EQ(error.field, field);
-      try {
-        spec::resolved_step_rounded(w);
-        ADD_FAILURE() << "the oracle accepted\n" << show(w);
-      } catch (const spec::OutsideC& oracle) {
-        EXPECT_STREQ(error.what(), oracle.what());
-      }
-    }
+    const auto error = thrown<spec::OutsideC>([&] { World{w}; });
+    const auto oracle = thrown<spec::OutsideC>([&] { spec::resolved_step_rounded(w); });
+    ASSERT_TRUE(error && oracle) << show(w);
+    EXPECT_EQ(error->index, index);
+    EXPECT_EQ(error->field, field);
+    EXPECT_STREQ(error->what(), oracle->what());
   };
   refused({{0, 0, 0, 0, 1}, {0, 0, 0, nan, 1}}, 1, spec::Field::vy);
   refused({{kInf, 0, 0, 0, 1}}, 0, spec::Field::px);
