@@ -1,4 +1,4 @@
-// Strips, and sort and sweep on x within each; the conservativeness argument is in broad_phase.hpp.
+// The cell grid and the cell order; the conservativeness argument is in broad_phase.hpp.
 #include "impl/broad_phase.hpp"
 
 #include "impl/predicate.hpp"
@@ -6,190 +6,175 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numeric>
 #include <stdexcept>
 
 namespace circles::impl {
 
-// RN(x − r) is one of the two doubles that bracket the exact x − r (or −∞ past the overflow threshold), so
-// the next double below it is ≤ x − r: if RN(x − r) ≥ x − r, then the double below it is the lower bracket
-// or lower still. The step costs a few ulps of width and needs no rounding-mode change. x, r finite: no NaN.
-double outward_lower(double x, double r) noexcept {
-  return std::nextafter(x - r, -std::numeric_limits<double>::infinity());
+void CellGrid::plan(std::span<const double> px, std::span<const double> py, std::span<const double> r) {
+  const std::size_t n = px.size();
+  if (py.size() != n || r.size() != n) throw std::invalid_argument("CellGrid::plan: px, py and r differ in size");
+  double xlo = std::numeric_limits<double>::infinity(), ylo = xlo, xhi = -xlo, yhi = -xlo;
+  std::vector<double> widths;
+  widths.reserve(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const double a = outward_lower(px[k], r[k]), b = outward_upper(px[k], r[k]);
+    const double c = outward_lower(py[k], r[k]), d = outward_upper(py[k], r[k]);
+    if (std::isfinite(b - a)) widths.push_back(b - a);
+    if (std::isfinite(a)) xlo = std::min(xlo, a);
+    if (std::isfinite(b)) xhi = std::max(xhi, b);
+    if (std::isfinite(c)) ylo = std::min(ylo, c);
+    if (std::isfinite(d)) yhi = std::max(yhi, d);
+  }
+  // The base cell: the largest width within kWidthSpread medians (0 for an empty world).
+  double base = 0;
+  if (!widths.empty()) {
+    const auto middle = widths.begin() + static_cast<std::ptrdiff_t>(widths.size() / 2);
+    std::nth_element(widths.begin(), middle, widths.end());
+    const double limit = kWidthSpread * *middle;
+    for (const double w : widths)
+      if (w <= limit) base = std::max(base, w);
+  }
+  // At least the extent over kPlannedCells, so the scene fits in the grid; halves keep the extent finite.
+  const double extent = std::max(xhi / 2 - xlo / 2, yhi / 2 - ylo / 2);
+  if (std::isfinite(extent)) base = std::max(base, extent / (kPlannedCells / 2));
+  // Keep 1/base finite and base finite: 2^-1000 and 2^1000 are far outside any width that matters here.
+  base_cell_ = std::clamp(std::isfinite(base) ? base : 0x1p1000, 0x1p-1000, 0x1p1000);
+  const double centre_x = std::isfinite(extent) ? xlo / 2 + xhi / 2 : 0;
+  const double centre_y = std::isfinite(extent) ? ylo / 2 + yhi / 2 : 0;
+  origin_x_ = centre_x - static_cast<double>(kCells / 2) * base_cell_;
+  origin_y_ = centre_y - static_cast<double>(kCells / 2) * base_cell_;
+  // inv_L = 4^-L / base: exact powers of two apart (or 0 once they underflow, which keeps cell() monotone).
+  for (unsigned level = 0; level < kLevels; ++level)
+    inverse_[level] = std::ldexp(1 / base_cell_, -2 * static_cast<int>(level));
 }
 
-// The mirror image of outward_lower: the double above RN(x + r) is ≥ x + r.
-double outward_upper(double x, double r) noexcept {
-  return std::nextafter(x + r, std::numeric_limits<double>::infinity());
+void CellGrid::keys(std::span<const double> px, std::span<const double> py, std::span<const double> r,
+                    std::span<CellKey> out) const noexcept {
+  // The first pass is the common case: level 0, where the box is no wider than the base cell and spans at
+  // most two cells on each axis, branch-free (GCC 12 does not vectorize it yet; the branches it saves are the
+  // gain); int32 suffices (cells < 2^27). At level 0, inv_0 ∈ [2^-1000, 2^1000]
+  // and v − o is finite or ±∞, so the product is never NaN and the clamps can be branch-free ?: forms.
+  // A misfit is marked by a key no circle has (real keys use the low 60 bits), then redone.
+  constexpr CellKey kMisfit = ~CellKey{0};
+  const std::size_t n = out.size();
+  const double inv = inverse_[0], ox = origin_x_, oy = origin_y_;
+  for (std::size_t t = 0; t < n; ++t) {
+    const double x = px[t], y = py[t], radius = r[t];
+    const double xlo = outward_lower(x, radius), xhi = outward_upper(x, radius);
+    const double ylo = outward_lower(y, radius), yhi = outward_upper(y, radius);
+    const auto at0 = [inv](double v, double origin) {
+      double c = (v - origin) * inv;
+      c = c > 0 ? c : 0;
+      c = c < kLastCell ? c : kLastCell;
+      return static_cast<std::int32_t>(c);
+    };
+    const std::int32_t cx = at0(xlo, ox), cy = at0(ylo, oy), cx1 = at0(xhi, ox), cy1 = at0(yhi, oy);
+    const bool fits = ((xhi - xlo) * inv <= 1) & (cx1 - cx <= 1) & (cy1 - cy <= 1);
+    const CellKey key = (static_cast<CellKey>(cy) << kCellBits) | static_cast<CellKey>(cx);
+    out[t] = fits ? key : kMisfit;
+  }
+  for (std::size_t t = 0; t < n; ++t)
+    if (out[t] == kMisfit) [[unlikely]]
+      out[t] = key_at_any_level(outward_lower(px[t], r[t]), outward_upper(px[t], r[t]), outward_lower(py[t], r[t]),
+                                outward_upper(py[t], r[t]));
 }
 
-void BroadPhase::sort_members(std::size_t begin, std::size_t end) {
-  // The keys (xlo, index) sit beside the members, so the sort reads contiguous memory.
-  const auto before = [](const Member& a, const Member& b) { return a.xlo < b.xlo || (a.xlo == b.xlo && a.k < b.k); };
-  // Insertion sort from the previous step's order, with a budget of moves linear in the segment; a segment
-  // that moved far (or a first step) falls back to std::sort.
-  std::size_t budget = 8 * (end - begin) + 64;
-  for (std::size_t a = begin + 1; a < end; ++a) {
-    const Member m = member_[a];
-    std::size_t b = a;
-    while (b > begin && before(m, member_[b - 1])) {
-      member_[b] = member_[b - 1];
-      --b;
-      if (--budget == 0) {
-        member_[b] = m;
-        std::sort(member_.begin() + static_cast<std::ptrdiff_t>(begin),
-                  member_.begin() + static_cast<std::ptrdiff_t>(end), before);
-        return;
+CellKey CellGrid::key_at_any_level(double xlo, double xhi, double ylo, double yhi) const noexcept {
+  // Start at the least level whose cell is at least the box's width in base cells, q = width·inv_0:
+  // 4^L ≥ q for L = ⌈log4 q⌉ = ⌈(ilogb(q) + 1)/2⌉ (q < 2^(ilogb(q)+1)). Only a start: the span check decides.
+  const double q = (xhi - xlo) * inverse_[0];
+  unsigned level = 0;
+  if (q > 1) level = static_cast<unsigned>(std::min((std::min(std::ilogb(q), 256) + 2) / 2, int{kGlobalLevel}));
+  for (; level < kGlobalLevel; ++level) {
+    const std::uint32_t cx = cell_of_x(xlo, level);
+    if (cell_of_x(xhi, level) > cx + 1) continue;
+    const std::uint32_t cy = cell_of_y(ylo, level);
+    if (cell_of_y(yhi, level) > cy + 1) continue;
+    return pack(level, cy, cx);
+  }
+  return pack(kGlobalLevel, 0, 0);
+}
+
+CellGrid::Range CellGrid::neighbourhood(double x, double y, double r, unsigned level) const noexcept {
+  // Step 4 of the argument: [cell(xlo) − 1, cell(xhi)] × [cell(ylo) − 1, cell(yhi)], clamped at 0.
+  const std::uint32_t x0 = cell_of_x(outward_lower(x, r), level), y0 = cell_of_y(outward_lower(y, r), level);
+  return Range{x0 > 0 ? x0 - 1 : 0, cell_of_x(outward_upper(x, r), level), y0 > 0 ? y0 - 1 : 0,
+               cell_of_y(outward_upper(y, r), level)};
+}
+
+bool CellOrder::sort(std::span<const CellKey> keys, std::span<const CellKey> previous,
+                     std::vector<std::uint32_t>& order) {
+  const std::size_t n = keys.size();
+  if (n > std::numeric_limits<std::uint32_t>::max())
+    throw std::invalid_argument("CellOrder::sort: more than 2^32 - 1 slots");
+  order.resize(n);
+  // Already sorted (a quiet world, or one whose circles all kept their cells): the identity.
+  if (std::is_sorted(keys.begin(), keys.end())) {
+    for (std::size_t s = 0; s < n; ++s) order[s] = static_cast<std::uint32_t>(s);
+    return true;
+  }
+  const auto before = [](const Entry& a, const Entry& b) { return a.key < b.key || (a.key == b.key && a.slot < b.slot); };
+  // Split by how far each slot's row moved since `previous`, which was sorted: the slots that kept their row
+  // are in row order, and within a row nearly in column order (a column moves by one cell at most, for most);
+  // so are those that moved one row up, and one row down. Each such list needs only local repair.
+  same_.clear();
+  up_.clear();
+  down_.clear();
+  other_.clear();
+  const bool guided = previous.size() == n;
+  for (std::size_t s = 0; s < n; ++s) {
+    const Entry e{keys[s], static_cast<std::uint32_t>(s)};
+    if (guided && CellGrid::level(keys[s]) == CellGrid::level(previous[s])) {
+      const std::uint32_t now = CellGrid::cell_y(keys[s]), then = CellGrid::cell_y(previous[s]);
+      if (now == then) {
+        same_.push_back(e);
+        continue;
+      }
+      if (now == then + 1) {
+        up_.push_back(e);
+        continue;
+      }
+      if (now + 1 == then) {
+        down_.push_back(e);
+        continue;
       }
     }
-    member_[b] = m;
+    other_.push_back(e);
   }
-}
-
-std::size_t BroadPhase::strip_of(double y) const noexcept {
-  // Monotone in y: y ↦ RN(y − y0) ↦ RN(·/h) are monotone (h > 0 finite, y0 finite, so no NaN), and so are the
-  // clamp and the truncation. Accuracy does not matter, only monotonicity (broad_phase.hpp, step 4).
-  const double t = (y - strip_origin_) / strip_height_;
-  if (!(t > 0)) return 0;
-  if (t >= static_cast<double>(strip_count_ - 1)) return strip_count_ - 1;
-  return static_cast<std::size_t>(t);
-}
-
-void BroadPhase::choose_strips() {
-  const std::size_t n = xlo_.size();
-  strip_count_ = 1;
-  strip_origin_ = 0;
-  strip_height_ = 1;
-  // The strip height: kStripDiameters times the median box width, so a strip holds a few circles' worth of
-  // height; the count is capped at about n, which bounds memory for sparse worlds of huge extent.
-  widths_.resize(n);
-  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-  for (std::size_t k = 0; k < n; ++k) {
-    widths_[k] = xhi_[k] - xlo_[k];
-    if (std::isfinite(ylo_[k])) lo = std::min(lo, ylo_[k]);
-    if (std::isfinite(yhi_[k])) hi = std::max(hi, yhi_[k]);
-  }
-  if (n < kStripsFrom || !(lo < hi)) return;
-  std::nth_element(widths_.begin(), widths_.begin() + static_cast<std::ptrdiff_t>(n / 2), widths_.end());
-  const double range = hi - lo;
-  double height = kStripDiameters * widths_[n / 2];
-  if (!std::isfinite(range) || !std::isfinite(height) || !(height > 0)) return;
-  const double cap = static_cast<double>(n);
-  if (range / height > cap) height = range / cap;
-  if (!std::isfinite(height) || !(height > 0)) return;
-  strip_origin_ = lo;
-  strip_height_ = height;
-  strip_count_ = static_cast<std::size_t>(std::min(cap, std::ceil(range / height))) + 1;
-}
-
-void BroadPhase::candidates(std::span<const double> px, std::span<const double> py, std::span<const double> r,
-                            std::vector<CandidatePair>& out) {
-  const std::size_t n = px.size();
-  if (py.size() != n || r.size() != n)
-    throw std::invalid_argument("BroadPhase::candidates: px, py and r differ in size");
-  if (n > std::numeric_limits<std::uint32_t>::max())
-    throw std::invalid_argument("BroadPhase::candidates: more than 2^32 - 1 circles");
-  out.clear();
-
-  // Step 2 of the argument: boxes that contain the exact ones.
-  xlo_.resize(n);
-  xhi_.resize(n);
-  ylo_.resize(n);
-  yhi_.resize(n);
-  for (std::size_t k = 0; k < n; ++k) {
-    xlo_[k] = outward_lower(px[k], r[k]);
-    xhi_[k] = outward_upper(px[k], r[k]);
-    ylo_[k] = outward_lower(py[k], r[k]);
-    yhi_[k] = outward_upper(py[k], r[k]);
-  }
-
-  choose_strips();
-
-  // Step 4: circle k is a member of strips strip_of(ylo_k) … strip_of(yhi_k). A counting sort by strip,
-  // filled in the previous step's order, then each strip sorted by (xlo, index): circles move little per
-  // step, so each strip is nearly sorted already.
-  if (order_.size() != n) {
-    order_.resize(n);
-    std::iota(order_.begin(), order_.end(), std::uint32_t{0});
-  }
-  // A circle that would join more than kMaxSpan strips is wide: it joins none, and is paired below by a scan
-  // of all circles, so memory stays linear when a few circles are far larger than the median.
-  first_strip_.resize(n);
-  last_strip_.resize(n);
-  wide_.clear();
-  is_wide_.assign(n, 0);
-  strip_start_.assign(strip_count_ + 1, 0);
-  for (std::size_t k = 0; k < n; ++k) {
-    first_strip_[k] = strip_of(ylo_[k]);
-    last_strip_[k] = strip_of(yhi_[k]);
-    if (last_strip_[k] - first_strip_[k] >= kMaxSpan) {
-      wide_.push_back(static_cast<std::uint32_t>(k));
-      is_wide_[k] = 1;
-      continue;
-    }
-    for (std::size_t s = first_strip_[k]; s <= last_strip_[k]; ++s) ++strip_start_[s + 1];
-  }
-  for (std::size_t s = 0; s < strip_count_; ++s) strip_start_[s + 1] += strip_start_[s];
-  const std::size_t members = strip_start_[strip_count_];
-  member_.resize(members);
-  fill_.assign(strip_start_.begin(), strip_start_.end() - 1);
-  for (const std::uint32_t k : order_)
-    if (!is_wide_[k])
-      for (std::size_t s = first_strip_[k]; s <= last_strip_[k]; ++s) member_[fill_[s]++] = Member{xlo_[k], k};
-  for (std::size_t s = 0; s < strip_count_; ++s) sort_members(strip_start_[s], strip_start_[s + 1]);
-  sorted_xlo_.resize(members);
-  sorted_xhi_.resize(members);
-  sorted_ylo_.resize(members);
-  sorted_yhi_.resize(members);
-  sorted_first_.resize(members);
-  order_.clear();
-  for (std::size_t s = 0; s < strip_count_; ++s) {
-    for (std::size_t a = strip_start_[s]; a < strip_start_[s + 1]; ++a) {
-      const std::uint32_t k = member_[a].k;
-      sorted_xlo_[a] = xlo_[k];
-      sorted_xhi_[a] = xhi_[k];
-      sorted_ylo_[a] = ylo_[k];
-      sorted_yhi_[a] = yhi_[k];
-      sorted_first_[a] = first_strip_[k];
-      // The next step's fill order: each circle once, at its first strip, in (strip, xlo, index) order.
-      if (first_strip_[k] == s) order_.push_back(k);
-    }
-  }
-  order_.insert(order_.end(), wide_.begin(), wide_.end());
-
-  // Step 3 within each strip: its members are sorted by xlo, so every member whose x interval meets a's and
-  // that follows a lies in one run after a, ended by the first xlo beyond xhi_a. Comparisons are exact and
-  // ±∞ compare as ordered numbers, so an overflowed bound only widens the run. Step 4's rule keeps the pair
-  // in one strip only: the strip of max(ylo_i, ylo_j), which is max(first strip of i, first strip of j).
-  for (std::size_t s = 0; s < strip_count_; ++s) {
-    const std::size_t end = strip_start_[s + 1];
-    for (std::size_t a = strip_start_[s]; a < end; ++a) {
-      const double xhi = sorted_xhi_[a];
-      const double ylo = sorted_ylo_[a];
-      const double yhi = sorted_yhi_[a];
-      const std::size_t first = sorted_first_[a];
-      for (std::size_t b = a + 1; b < end && sorted_xlo_[b] <= xhi; ++b) {
-        if (sorted_ylo_[b] <= yhi && ylo <= sorted_yhi_[b] && std::max(first, sorted_first_[b]) == s) {
-          const std::uint32_t i = member_[a].k;
-          const std::uint32_t j = member_[b].k;
-          out.push_back(i < j ? CandidatePair{i, j} : CandidatePair{j, i});
+  // Insertion sort with a budget of moves linear in the list; past it, std::sort.
+  const auto repair = [&before](std::vector<Entry>& list) {
+    std::size_t budget = 8 * list.size() + 64;
+    for (std::size_t a = 1; a < list.size(); ++a) {
+      const Entry e = list[a];
+      std::size_t b = a;
+      while (b > 0 && before(e, list[b - 1])) {
+        list[b] = list[b - 1];
+        --b;
+        if (--budget == 0) {
+          list[b] = e;
+          std::sort(list.begin(), list.end(), before);
+          return;
         }
       }
+      list[b] = e;
     }
-  }
-
-  // Wide circles, by steps 1 and 2 alone: each is box-tested against every other circle. A pair of two wide
-  // circles is reported by the one with the lower index; a wide circle is in no strip, so no pair is reported
-  // twice. Cost n per wide circle.
-  for (const std::uint32_t w : wide_) {
-    for (std::size_t k = 0; k < n; ++k) {
-      if (k == w || (is_wide_[k] && k < w)) continue;
-      if (xlo_[k] <= xhi_[w] && xlo_[w] <= xhi_[k] && ylo_[k] <= yhi_[w] && ylo_[w] <= yhi_[k]) {
-        const auto j = static_cast<std::uint32_t>(k);
-        out.push_back(w < j ? CandidatePair{w, j} : CandidatePair{j, w});
-      }
-    }
-  }
+  };
+  repair(same_);
+  repair(up_);
+  repair(down_);
+  std::sort(other_.begin(), other_.end(), before);
+  // Merge the small lists first, then the large one once. (key, slot) is a total order, so the result does
+  // not depend on how the lists were formed.
+  spare_.resize(up_.size() + down_.size());
+  std::merge(up_.begin(), up_.end(), down_.begin(), down_.end(), spare_.begin(), before);
+  merged_.resize(spare_.size() + other_.size());
+  std::merge(spare_.begin(), spare_.end(), other_.begin(), other_.end(), merged_.begin(), before);
+  std::size_t a = 0, b = 0, out = 0;
+  while (a < same_.size() && b < merged_.size())
+    order[out++] = before(merged_[b], same_[a]) ? merged_[b++].slot : same_[a++].slot;
+  while (a < same_.size()) order[out++] = same_[a++].slot;
+  while (b < merged_.size()) order[out++] = merged_[b++].slot;
+  return false;
 }
 
 bool candidates_cover_all_intersecting_pairs(std::span<const double> px, std::span<const double> py,
@@ -208,6 +193,19 @@ bool candidates_cover_all_intersecting_pairs(std::span<const double> px, std::sp
                               CandidatePair{static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)}))
         return false;
   return true;
+}
+
+void index_levels(std::span<const CellKey> key, std::array<std::size_t, CellGrid::kLevels + 1>& level_begin,
+                  std::vector<unsigned>& levels) {
+  levels.clear();
+  for (unsigned level = 0; level <= CellGrid::kLevels; ++level) {
+    const CellKey first = level == CellGrid::kLevels ? std::numeric_limits<CellKey>::max() : CellGrid::pack(level, 0, 0);
+    level_begin[level] = level == CellGrid::kLevels
+                             ? key.size()
+                             : static_cast<std::size_t>(std::lower_bound(key.begin(), key.end(), first) - key.begin());
+  }
+  for (unsigned level = 0; level < CellGrid::kGlobalLevel; ++level)
+    if (level_begin[level] < level_begin[level + 1]) levels.push_back(level);
 }
 
 }  // namespace circles::impl

@@ -1,46 +1,239 @@
-// The broad phase of the double engine: candidate pairs for the exact narrow phase (impl/predicate.hpp).
+// The broad phase of the engines: a hierarchy of uniform grids over circles kept in cell order.
 //
-//   Invariant (conservative): for finite px, py and r ≥ 0, every pair {i, j}, i ≠ j, that intersects
-//   exactly by (3) is among the candidates. Candidates may also hold pairs that do not intersect; the
-//   narrow phase decides those.
+//   Invariant (conservative): for finite px, py and r ≥ 0, every pair {a, b}, a ≠ b, that intersects exactly
+//   by (3) is visited: a's neighbourhood (CellGrid::neighbourhood) holds b's cell, or b's holds a's, or one of
+//   them is global. The narrow phase decides the pairs it is given; pairs that do not intersect cost a test,
+//   never a wrong answer.
 //
-// Method: horizontal strips, and sort and sweep on x within each strip. Each circle k gets the box
-// [xlo_k, xhi_k] × [ylo_k, yhi_k] with xlo_k ≤ px_k − r_k and xhi_k ≥ px_k + r_k on the exact values (and the
-// same in y), rounded outward (outward_lower/outward_upper below). The plane is cut into strips of equal
-// height (a few median box widths; one strip for small worlds); circle k is a member of every strip from
-// strip_of(ylo_k) to strip_of(yhi_k). In each strip the members are sorted by (xlo, index); a member is paired
-// with each following member whose xlo ≤ its xhi, and the pair is kept when the y intervals overlap and the
-// strip is strip_of(max(ylo_i, ylo_j)), so each pair is reported once. Radii that vary widely need no special
-// care: a large circle is a member of more strips and its interval reaches further.
+// The grid. Level L has square cells of side s·4^L (s, the base cell, chosen from the radii by plan()); cell
+// indices along an axis are cell(x, L) = clamp(⌊RN(RN(x − o)·inv_L)⌋, 0, kCells − 1), inv_L = 4^−L/s, for an
+// origin o. Circle c has the box [xlo, xhi] × [ylo, yhi] that holds its exact box [px − r, px + r] × … (the
+// outward bounds below). Its level is the first L, from the least whose cell is as wide as the box, at which
+// the box spans at most two cells on each axis, cell(xhi, L) ≤ cell(xlo, L) + 1 and the same in y, and its cell
+// there is (cell(xlo, L), cell(ylo, L)): the cell of the box's lower corner. A box that spans more at every level below kGlobalLevel (only for extents near the
+// double range) is global and is tested against every circle.
 //
-// Why no exactly intersecting pair is dropped (the argument in brief; broad_phase.cpp repeats it at the code):
-//   1. a intersect b gives |X| ≤ |p_b − p_a| ≤ S = r_a + r_b exactly, so b_x − r_b ≤ a_x + r_a and
-//      a_x − r_a ≤ b_x + r_b: the exact x intervals overlap; likewise in y.
-//   2. The computed bounds contain the exact ones (outward rounding), so the computed intervals overlap too.
-//      (Plain RN bounds would also do, as RN is monotone: xhi_a = RN(a_x + r_a) ≥ RN(b_x − r_b) = xlo_b. The
-//      extra ulp outward makes each bound sound on its own, which is what the unit tests check.)
-//   3. Sorted by xlo, with a before b: xlo_a ≤ xlo_c ≤ xlo_b ≤ xhi_a for every c between them, so the sweep
-//      from a does not stop before it reaches b, and the y test passes by 2.
-//   4. The strips: m = max(ylo_a, ylo_b) lies in both computed y intervals (by 2), and strip_of is monotone
-//      (non-decreasing) however it rounds, so strip_of(ylo_a) ≤ strip_of(m) ≤ strip_of(yhi_a), and the same
-//      for b: both are members of strip_of(m), where 3 finds the pair and the rule keeps it.
-//   Rounding in strip_of can only move a boundary, never break monotonicity; no other rounded quantity
-//   decides membership, so no rounding can drop a pair.
+// Why no exactly intersecting pair is missed (broad_phase.cpp repeats it at the code):
+//   1. a intersect b gives |X| ≤ |p_b − p_a| ≤ r_a + r_b exactly, so the exact boxes overlap: b_x − r_b ≤ a_x + r_a
+//      and a_x − r_a ≤ b_x + r_b, and the same in y.
+//   2. The computed bounds contain the exact ones, so the computed boxes overlap: xlo_b ≤ xhi_a, xlo_a ≤ xhi_b.
+//   3. cell(·, L) is monotone (non-decreasing) in x at every level: RN is monotone, inv_L ≥ 0, and floor and
+//      clamp are monotone. Rounding moves cell boundaries, never the order.
+//   4. Take L = level(b) ≥ level(a). By 2 and 3, cell(xlo_b) ≤ cell(xhi_a); by b's span and 3,
+//      cell(xlo_b) ≥ cell(xhi_b) − 1 ≥ cell(xlo_a) − 1. So b's cell lies in
+//      [cell(xlo_a) − 1, cell(xhi_a)] × [cell(ylo_a) − 1, cell(yhi_a)] at level L: a's neighbourhood at L.
+//   No step relies on the accuracy of a rounded value; only the monotonicity of 3 and the spans, which are
+//   checked per circle, carry the argument.
 //
-// Cost: counting sort into strips, a sort per strip, and one comparison per member pair in a strip whose x
-// intervals overlap. The fill follows the previous step's order, so a strip is nearly sorted and an insertion
-// sort repairs it (with a budget; past it, std::sort). Known slack: members that span two strips arrive as a
-// second sorted run, which often exhausts the budget (a run merge would fix it); circles much larger than the
-// median would join many strips: past kMaxSpan strips such a circle is "wide", joins none, and is box-tested
-// against every circle instead (steps 1 and 2 suffice), which keeps memory linear and costs n per wide circle.
+// The layout. The engines keep their circles sorted by key (level, cell y, cell x), so a neighbourhood is
+// at most three runs of consecutive slots, one per row, and a step reads memory in order. Circles move little
+// per step, so the order of one step is nearly the order of the next: CellOrder re-sorts in linear time when
+// each circle stays in its row or moves to the next one (the common case) and falls back to std::sort for the
+// few that move further.
 #pragma once
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace circles::impl {
+
+// ── Outward bounds ────────────────────────────────────────────────────────────────────────────────────
+//
+// t = RN(x − r) is within the two doubles that bracket the exact x − r, so pred(t), the double below t, is
+// ≤ x − r. With e = RN(RN(|t|·2^-52) + 2^-1073) ≥ ulp(t) (|t|·2^-52 ≥ ulp(t) for normal t, RN is monotone and
+// ulp(t) is a double; for subnormal t, ulp(t) = 2^-1074 < 2^-1073), t − e ≤ t − ulp(t) ≤ pred(t) exactly, and
+// RN is monotone, so RN(t − e) ≤ pred(t) ≤ x − r. An overflow gives t = −∞, e = +∞ and −∞: no NaN for finite
+// x, r ≥ 0. The mirror image gives the upper bound. Four flops, no libm call (std::nextafter is one).
+inline constexpr double kOutwardRelative = 0x1p-52;  // |t|·2^-52 ≥ ulp(t) for normal t
+inline constexpr double kOutwardAbsolute = 0x1p-1073;  // > ulp of every subnormal, 2^-1074
+
+// A double ≤ the exact x − r, for finite x and r ≥ 0 (−∞ when x − r is below −DBL_MAX's reach).
+inline double outward_lower(double x, double r) noexcept {
+  const double t = x - r;
+  return t - (std::fabs(t) * kOutwardRelative + kOutwardAbsolute);
+}
+// A double ≥ the exact x + r, for finite x and r ≥ 0 (+∞ when x + r is beyond DBL_MAX's reach).
+inline double outward_upper(double x, double r) noexcept {
+  const double t = x + r;
+  return t + (std::fabs(t) * kOutwardRelative + kOutwardAbsolute);
+}
+
+// ── The grid ──────────────────────────────────────────────────────────────────────────────────────────
+
+// A key: level (6 bits) · cell y (27 bits) · cell x (27 bits). Keys order circles by level, row, column.
+using CellKey = std::uint64_t;
+
+class CellGrid {
+ public:
+  static constexpr int kCellBits = 27;
+  static constexpr std::uint32_t kCells = std::uint32_t{1} << kCellBits;  // cells per axis
+  static constexpr unsigned kLevels = 64;
+  static constexpr unsigned kGlobalLevel = kLevels - 1;  // the level of global circles
+  // plan() puts the circles' extent within kCells / 4 base cells, centred, so circles can drift that far
+  // before their cells clamp (clamping is correct, only slower).
+  static constexpr double kPlannedCells = static_cast<double>(kCells) / 4;
+
+  static constexpr CellKey pack(unsigned level, std::uint32_t y, std::uint32_t x) noexcept {
+    return (CellKey{level} << (2 * kCellBits)) | (CellKey{y} << kCellBits) | x;
+  }
+  static constexpr unsigned level(CellKey k) noexcept { return static_cast<unsigned>(k >> (2 * kCellBits)); }
+  static constexpr std::uint32_t cell_y(CellKey k) noexcept {
+    return static_cast<std::uint32_t>(k >> kCellBits) & (kCells - 1);
+  }
+  static constexpr std::uint32_t cell_x(CellKey k) noexcept { return static_cast<std::uint32_t>(k) & (kCells - 1); }
+
+  // Chooses the base cell and the origin for circles (px, py, r): the base cell is the largest box width
+  // that is at most kWidthSpread times the median width (so one huge circle does not coarsen the grid for all
+  // the others; it takes a higher level), and at least the extent / kPlannedCells. Any finite choice is
+  // correct (see above); this one is for speed. Spans must have equal sizes.
+  void plan(std::span<const double> px, std::span<const double> py, std::span<const double> r);
+
+  // The cell index of x along one axis at a level: monotone in x. `origin` is the axis's origin.
+  std::uint32_t cell(double x, double origin, unsigned level) const noexcept {
+    const double t = (x - origin) * inverse_[level];
+    if (!(t > 0)) return 0;
+    if (t >= kLastCell) return kCells - 1;
+    return static_cast<std::uint32_t>(t);
+  }
+  std::uint32_t cell_of_x(double x, unsigned level) const noexcept { return cell(x, origin_x_, level); }
+  std::uint32_t cell_of_y(double y, unsigned level) const noexcept { return cell(y, origin_y_, level); }
+
+  // The key of the circle (x, y, r): its level and the cell of its box's lower corner there.
+  CellKey key(double x, double y, double r) const noexcept {
+    CellKey k;
+    keys(std::span<const double>(&x, 1), std::span<const double>(&y, 1), std::span<const double>(&r, 1),
+         std::span<CellKey>(&k, 1));
+    return k;
+  }
+  // out[t] = key(px[t], py[t], r[t]) for every t, in two passes: a branch-free one for the common case,
+  // then key_at_any_level for the rest. Spans of equal size.
+  void keys(std::span<const double> px, std::span<const double> py, std::span<const double> r,
+            std::span<CellKey> out) const noexcept;
+  // The key from the box: its level is the first from the least whose cell is as wide as the box, at which
+  // the box spans at most two cells on each axis.
+  CellKey key_at_any_level(double xlo, double xhi, double ylo, double yhi) const noexcept;
+
+  // A's neighbourhood at level L ≥ level(a): cells [x0, x1] × [y0, y1] (step 4 above).
+  struct Range {
+    std::uint32_t x0, x1, y0, y1;
+  };
+  Range neighbourhood(double x, double y, double r, unsigned level) const noexcept;
+
+  // True when the rectangle's corners fall strictly inside the grid at level 0: no cell there is clamped.
+  bool covers(double xlo, double xhi, double ylo, double yhi) const noexcept {
+    const auto inside = [](std::uint32_t c) { return c > 0 && c < kCells - 1; };
+    return inside(cell_of_x(xlo, 0)) && inside(cell_of_x(xhi, 0)) && inside(cell_of_y(ylo, 0)) &&
+           inside(cell_of_y(yhi, 0));
+  }
+
+  double base_cell() const noexcept { return base_cell_; }
+
+ private:
+  static constexpr double kLastCell = static_cast<double>(kCells - 1);
+  static constexpr double kWidthSpread = 4.0;
+  double origin_x_ = 0, origin_y_ = 0, base_cell_ = 1;
+  std::array<double, kLevels> inverse_{};  // inv_L = 4^-L / base cell
+};
+
+// ── The order ─────────────────────────────────────────────────────────────────────────────────────────
+
+// The permutation that sorts keys, computed in linear time when keys are nearly sorted already.
+class CellOrder {
+ public:
+  // Sets `order` to the slots of `keys` in ascending key order (ties in slot order): keys[order[0]] ≤
+  // keys[order[1]] ≤ …. `previous` holds the keys the same slots had when they were last sorted (ascending
+  // by slot), or is empty; it only guides the work, never the result. Returns true when `keys` were sorted
+  // already (`order` is then the identity).
+  bool sort(std::span<const CellKey> keys, std::span<const CellKey> previous, std::vector<std::uint32_t>& order);
+
+ private:
+  struct Entry {
+    CellKey key;
+    std::uint32_t slot;
+  };
+  std::vector<Entry> same_, up_, down_, other_, merged_, spare_;
+};
+
+// ── The query ─────────────────────────────────────────────────────────────────────────────────────────
+
+// Circles in cell order, as the query reads them: slot t has key[t] (ascending), px[t], py[t], r[t].
+struct CellView {
+  std::span<const CellKey> key;
+  std::span<const double> px, py, r;
+  std::span<const unsigned> levels;  // the levels that hold a circle, ascending, the global level excluded
+  std::span<const std::size_t> level_begin;  // level L holds slots [level_begin[L], level_begin[L + 1])
+};
+
+// Indexes keys sorted ascending by level: level_begin[L] is the first slot of level L (level_begin[kLevels]
+// is the size), and `levels` lists the levels below the global one that hold a circle.
+void index_levels(std::span<const CellKey> key, std::array<std::size_t, CellGrid::kLevels + 1>& level_begin,
+                  std::vector<unsigned>& levels);
+
+// The query's position in the view: a cursor in the next row of the same level that only moves forward.
+// One per run of ascending slots (one per thread's chunk).
+struct NeighbourCursor {
+  std::size_t at = 0;
+  bool ready = false;
+};
+
+// Calls visit(b) for every slot b after a (b > a) in a's forward neighbourhood: the slots of a's level in a's
+// row from a's column to the next and in the row above from one column left to one right, and the slots of
+// every higher level in a's neighbourhood there (step 4). Over all a, every pair of non-global slots whose
+// cells make them neighbours is visited exactly once:
+//   same level: both spans are ≤ 1, so by step 4 the two cells are at most one apart on each axis; the
+//     earlier slot has the lower row, or the same row and the same or lower column, so its forward
+//     neighbourhood holds the later one.
+//   different levels: only the lower level's slot searches the higher level.
+// Slots a must be visited in ascending order with one NeighbourCursor. Global circles (level kGlobalLevel)
+// visit nothing and are visited by no one: the caller pairs them with every circle.
+template <class Visit>
+void visit_neighbourhood(const CellGrid& grid, const CellView& view, std::size_t a, NeighbourCursor& cursor,
+                         Visit&& visit) {
+  using G = CellGrid;
+  const std::size_t n = view.key.size();
+  const CellKey k = view.key[a];
+  const unsigned level = G::level(k);
+  if (level == G::kGlobalLevel) return;
+  const std::uint32_t cx = G::cell_x(k), cy = G::cell_y(k);
+  const std::uint32_t x1 = cx + 1 < G::kCells ? cx + 1 : cx;
+  // a's row: the slots after a up to the end of the next column.
+  const CellKey row_end = G::pack(level, cy, x1);
+  for (std::size_t b = a + 1; b < n && view.key[b] <= row_end; ++b) visit(b);
+  // The row above, columns cx − 1 … cx + 1. Its first key only grows with a's key, so the cursor moves
+  // forward over the whole view once: linear in all.
+  if (cy + 1 < G::kCells) {
+    const CellKey lo = G::pack(level, cy + 1, cx > 0 ? cx - 1 : 0), hi = G::pack(level, cy + 1, x1);
+    std::size_t& c = cursor.at;
+    if (!cursor.ready) {
+      c = static_cast<std::size_t>(std::lower_bound(view.key.begin(), view.key.end(), lo) - view.key.begin());
+      cursor.ready = true;
+    }
+    while (c < n && view.key[c] < lo) ++c;
+    for (std::size_t b = c; b < n && view.key[b] <= hi; ++b) visit(b);
+  }
+  // Each level above: step 4's range, row by row, by binary search within the level.
+  for (const unsigned above : view.levels) {
+    if (above <= level) continue;
+    const G::Range range = grid.neighbourhood(view.px[a], view.py[a], view.r[a], above);
+    const auto first = view.key.begin() + static_cast<std::ptrdiff_t>(view.level_begin[above]);
+    const auto last = view.key.begin() + static_cast<std::ptrdiff_t>(view.level_begin[above + 1]);
+    for (std::uint32_t row = range.y0; row <= range.y1; ++row) {
+      const CellKey hi = G::pack(above, row, range.x1);
+      for (auto b = std::lower_bound(first, last, G::pack(above, row, range.x0)); b != last && *b <= hi; ++b)
+        visit(static_cast<std::size_t>(b - view.key.begin()));
+      if (row == G::kCells - 1) break;
+    }
+  }
+}
+
+// ── For tests ─────────────────────────────────────────────────────────────────────────────────────────
 
 // A candidate pair, i < j (indices into the world).
 struct CandidatePair {
@@ -48,55 +241,6 @@ struct CandidatePair {
   std::uint32_t j;
   friend bool operator==(const CandidatePair&, const CandidatePair&) = default;
   friend auto operator<=>(const CandidatePair&, const CandidatePair&) = default;
-};
-
-// A double ≤ the exact x − r, for finite x and r (−∞ when x − r is below −DBL_MAX's reach).
-double outward_lower(double x, double r) noexcept;
-// A double ≥ the exact x + r, for finite x and r (+∞ when x + r is beyond DBL_MAX's reach).
-double outward_upper(double x, double r) noexcept;
-
-class BroadPhase {
- public:
-  // Replaces `out` with the candidate pairs of the world (px, py, r), each pair once, in sweep order.
-  // The spans must have equal sizes, below 2^32; values finite, r ≥ 0 (the engine's World guarantees both).
-  // Throws std::invalid_argument if the sizes differ or are too large.
-  void candidates(std::span<const double> px, std::span<const double> py, std::span<const double> r,
-                  std::vector<CandidatePair>& out);
-
- private:
-  // Worlds smaller than this use one strip: the plain sweep.
-  static constexpr std::size_t kStripsFrom = 64;
-  // Strip height in median box widths.
-  static constexpr double kStripDiameters = 4.0;
-  // A circle whose box meets more strips than this is wide (see candidates).
-  static constexpr std::size_t kMaxSpan = 8;
-
-  // Sorts member_[begin, end) by (xlo_, index).
-  void sort_members(std::size_t begin, std::size_t end);
-  // Sets strip_count_, strip_origin_ and strip_height_ from the boxes (one strip when the world is small or
-  // its extent or box widths are not finite).
-  void choose_strips();
-  // The strip of ordinate y: monotone (non-decreasing) in y, in [0, strip_count_).
-  std::size_t strip_of(double y) const noexcept;
-
-  std::vector<std::uint32_t> order_;  // circle indices in the last step's (first strip, xlo, index) order
-  std::vector<double> xlo_, xhi_, ylo_, yhi_;  // by circle index
-  std::vector<double> widths_;                 // scratch for the median
-  std::size_t strip_count_ = 1;
-  double strip_origin_ = 0, strip_height_ = 1;
-  std::vector<std::size_t> first_strip_;  // by circle index: strip_of(ylo)
-  std::vector<std::size_t> last_strip_;   // by circle index: strip_of(yhi)
-  std::vector<std::uint32_t> wide_;       // the wide circles, in index order
-  std::vector<unsigned char> is_wide_;    // by circle index
-  std::vector<std::size_t> strip_start_, fill_;    // members of strip s: [strip_start_[s], strip_start_[s + 1])
-  // The members, strip by strip, each strip in (xlo, index) order, with their boxes, for locality.
-  struct Member {
-    double xlo;
-    std::uint32_t k;
-  };
-  std::vector<Member> member_;
-  std::vector<double> sorted_xlo_, sorted_xhi_, sorted_ylo_, sorted_yhi_;
-  std::vector<std::size_t> sorted_first_;
 };
 
 // The debug validator, all pairs: true when `candidates` holds every pair {i, j}, i ≠ j, that intersects

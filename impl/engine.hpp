@@ -1,16 +1,20 @@
-// The double engine: the resolved step of the oracle (spec/equations.hpp, docs/math.md) over doubles.
+// The double engines: the resolved step of the oracle (spec/equations.hpp, docs/math.md) over doubles.
 //
 //   Invariant: for every World w whose next positions are finite,
 //              Engine(w).step() leaves world() equal, by value (−0 == +0), to spec::resolved_step_rounded(w):
 //              circle k takes the velocity of the least circle it intersects exactly (least in lexicographic
 //              order on (px, py, vx, vy, r), then by index), or keeps its own, and then
-//              p ← RN(p + v_new/60) per coordinate. Every circle reads the old world.
+//              p ← RN(p + v_new/60) per coordinate. Every circle reads the old world. The result does not depend
+//              on EngineOptions: every thread count and every skipped step give the same bits.
 //
-// Pieces: BroadPhase (impl/broad_phase.hpp, conservative) → intersect_exact (impl/predicate.hpp, exact) →
-// the lexicographic minimum (double < and == are exact; −0 == +0 as for the oracle's rationals) →
-// advance_rounded (impl/rounding.hpp, correctly rounded).
+// Pieces: the cell grid (impl/broad_phase.hpp, conservative) → the arithmetic's intersect test → the
+// lexicographic minimum (double < and == are exact; −0 == +0 as for the oracle's rationals) → the arithmetic's
+// update. ExactArithmetic (intersect_exact, advance_rounded) makes the invariant hold; NaiveArithmetic
+// (intersect_naive, advance_naive) is the same engine without exactness, to measure what exactness costs.
+// docs/engine.md describes the layout, the step and the quiet-step proof.
 #pragma once
 
+#include "impl/arithmetic.hpp"
 #include "impl/broad_phase.hpp"
 #include "spec/outside_c.hpp"
 
@@ -26,13 +30,13 @@
 namespace circles::impl {
 
 // A world as structure of arrays: circle k is (px[k], py[k], vx[k], vy[k], r[k]).
-//   Invariant: all five arrays have size(); every value is finite and every r[k] ≥ 0 (−0 allowed), i.e. every
-//   circle is in C of the resolved profile.
+//   Invariant: all five arrays have size() < 2^32; every value is finite and every r[k] ≥ 0 (−0 allowed), i.e.
+//   every circle is in C of the resolved profile.
 class World {
  public:
   World() = default;
   // From [px, py, vx, vy, r] per circle. Throws spec::OutsideC for the first circle outside C of the resolved
-  // profile, with the oracle's own check (spec::check_doubles).
+  // profile, with the oracle's own check (spec::check_doubles), and std::length_error for 2^32 circles or more.
   explicit World(const std::vector<std::array<double, 5>>& circles);
 
   // Back to [px, py, vx, vy, r] per circle, the same doubles bit for bit.
@@ -50,44 +54,99 @@ class World {
   bool precedes(std::size_t a, std::size_t b) const noexcept;
 
  private:
-  friend class Engine;
+  template <class>
+  friend class BasicEngine;
   friend World step_all_pairs(const World& w);
   std::vector<double> px_, py_, vx_, vy_, r_;
 };
 
-// A step whose correctly rounded position overflows: circle `index`, coordinate `field` ("px" or "py"),
-// would become ±infinity. The step number is the caller's to add. The world is left unchanged.
+// A step whose position overflows: at step `step` (the step that would make world `step` from world
+// `step` − 1), circle `index`'s coordinate `field` ("px" or "py") would become ±infinity. The world is left
+// as it was before that step.
 class PositionOverflow : public std::overflow_error {
  public:
-  PositionOverflow(std::size_t index, const char* field);
+  PositionOverflow(std::uint64_t step, std::size_t index, const char* field);
+  std::uint64_t step;
   std::size_t index;
   const char* field;
 };
 
-// The engine: a world and the broad phase's state, which is kept across steps (the strips' member order).
-class Engine {
- public:
-  Engine() = default;
-  explicit Engine(World w) : world_(std::move(w)) {}
+struct EngineOptions {
+  // Worker threads; 0 means one per core (std::thread::hardware_concurrency()). Results are the same bits
+  // for every value.
+  unsigned threads = 0;
+  // Prove stretches of steps in which no pair can meet and run them without the broad or narrow phase.
+  bool skip_quiet_steps = true;
+};
 
-  const World& world() const noexcept { return world_; }
+// The engine: circles kept in cell order (impl/broad_phase.hpp) across steps.
+template <class Arithmetic>
+class BasicEngine {
+ public:
+  BasicEngine() : BasicEngine(World{}) {}
+  // Throws std::invalid_argument for more threads than kMaxThreads.
+  explicit BasicEngine(World w, EngineOptions options = {});
+
+  // The current world, circle k at index k as given to the constructor.
+  World world() const;
+  // Steps taken since construction.
+  std::uint64_t steps() const noexcept { return steps_; }
+  // Steps taken without the broad and narrow phases, proven quiet.
+  std::uint64_t quiet_steps() const noexcept { return quiet_steps_; }
+  unsigned threads() const noexcept { return threads_; }
 
   // One resolved step. Throws PositionOverflow (world unchanged) when a position would become infinite.
   void step();
 
-  // The broad phase's candidate pairs of the last step (empty before the first), for the validator.
-  std::span<const CandidatePair> last_candidates() const noexcept { return pairs_; }
+  // For the debug validator: the pairs {i, j}, i < j (circle indices), that the next step's narrow phase
+  // would test, once each. O(n + pairs).
+  std::vector<CandidatePair> candidates() const;
+
+  static constexpr unsigned kMaxThreads = 256;
 
  private:
-  World world_;
-  BroadPhase broad_;
-  std::vector<CandidatePair> pairs_;
-  std::vector<std::size_t> least_;  // per circle: the least circle it intersects, or kNone
-  std::vector<double> next_vx_, next_vy_, next_px_, next_py_;
+  struct Layout {  // circles in cell order; slot t holds circle id[t]
+    std::vector<double> px, py, vx, vy, r;
+    std::vector<std::uint32_t> id;
+    std::vector<CellKey> key;
+    std::vector<unsigned> levels;  // the levels that hold a circle, ascending, the global level excluded
+    std::array<std::size_t, CellGrid::kLevels + 1> level_begin{};  // level L: [level_begin[L], level_begin[L + 1])
+  };
+  struct Offer {  // circle `to` intersects circle `from`, found from `from`'s side
+    std::uint32_t to, from;
+  };
+
+  bool precedes(std::size_t a, std::size_t b) const noexcept;
+  void relayout();
+  void find_contacts();
+  void advance(bool with_contacts);
+  void commit();
+  bool quiet_for(std::uint64_t steps);
+
+  EngineOptions options_;
+  unsigned threads_ = 1;
+  std::uint64_t steps_ = 0, quiet_steps_ = 0;
+  std::uint64_t quiet_left_ = 0, horizon_ = 0, retry_at_ = 0;
+  bool keys_stale_ = false;
+  std::size_t contacts_ = 0;
+  CellGrid grid_;
+  CellOrder order_;
+  Layout now_;
+  // Scratch of one step: each slot's least contact (itself if none), the next positions and velocities and
+  // keys by slot, the sorting permutation, offers found across levels (one list per chunk).
+  std::vector<std::uint32_t> least_, permutation_, scratch_id_;
+  std::vector<double> next_px_, next_py_, next_vx_, next_vy_, scratch_r_;
+  std::vector<CellKey> next_key_;
+  std::vector<std::vector<Offer>> offers_;
 };
 
-// The reference engine for tests: the same step with every pair tested (no broad phase). O(n²).
-// Throws PositionOverflow like Engine::step.
+using Engine = BasicEngine<ExactArithmetic>;
+using NaiveEngine = BasicEngine<NaiveArithmetic>;
+extern template class BasicEngine<ExactArithmetic>;
+extern template class BasicEngine<NaiveArithmetic>;
+
+// The reference engine for tests: the exact step with every pair tested (no broad phase). O(n²).
+// Throws PositionOverflow (step 1) like Engine::step.
 World step_all_pairs(const World& w);
 
 }  // namespace circles::impl

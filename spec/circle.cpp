@@ -26,8 +26,13 @@ std::array<double, 5> nearest_doubles(const Circle& c) {
 }
 
 std::string to_string(const Circle& c) {
-  return "(" + to_string(c.p.x()) + ", " + to_string(c.p.y()) + ", " + to_string(c.v.x()) + ", " +
-         to_string(c.v.y()) + ", " + to_string(c.r) + ")";
+  // Appended piece by piece: GCC 12 at -O3 warns falsely (-Wrestrict) on "(" + std::string&&.
+  std::string out = "(";
+  for (const Q* field : {&c.p.x(), &c.p.y(), &c.v.x(), &c.v.y(), &c.r}) {
+    if (out.size() > 1) out += ", ";
+    out += to_string(*field);
+  }
+  return out + ")";
 }
 
 std::ostream& operator<<(std::ostream& os, const Circle& c) { return os << to_string(c); }

@@ -12,6 +12,7 @@
 #include <rapidcheck.h>
 #include <rapidcheck/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cfloat>
@@ -77,13 +78,14 @@ struct Check {
     Engine local{World{w}};
     Engine& e = engine ? *engine : local;
     const World before = e.world();
+    const std::vector<CandidatePair> tested = e.candidates();
     e.step();
     const Circles got = e.world().circles();
     const Circles want = spec::resolved_step_rounded(w);
     const Circles reference = step_all_pairs(before).circles();
     ++worlds;
     circles += static_cast<long>(w.size());
-    candidates += static_cast<long>(e.last_candidates().size());
+    candidates += static_cast<long>(tested.size());
     EXPECT_EQ(got.size(), want.size());
     for (std::size_t k = 0; k < got.size() && k < want.size(); ++k) {
       new_velocity += got[k][2] != w[k][2] || got[k][3] != w[k][3];
@@ -95,7 +97,7 @@ struct Check {
             << family << ": circle " << k << " field " << kFieldName[f] << " differs from the all-pairs engine";
       }
     }
-    EXPECT_TRUE(candidates_cover_all_intersecting_pairs(before.px(), before.py(), before.r(), e.last_candidates()))
+    EXPECT_TRUE(candidates_cover_all_intersecting_pairs(before.px(), before.py(), before.r(), tested))
         << family << ": the broad phase dropped an intersecting pair\nworld:\n" << show(w);
     for (std::size_t i = 0; i < w.size(); ++i)
       for (std::size_t j = i + 1; j < w.size(); ++j)
@@ -268,10 +270,11 @@ TEST(engine, broad_phase_covers_every_intersecting_pair_in_larger_worlds_over_ma
     for (int s = 0; s < 5; ++s) {
       const World before = e.world();
       const World reference = step_all_pairs(before);
+      const std::vector<CandidatePair> tested = e.candidates();
       e.step();
       ++steps;
-      pairs += static_cast<long>(e.last_candidates().size());
-      ASSERT_TRUE(candidates_cover_all_intersecting_pairs(before.px(), before.py(), before.r(), e.last_candidates()));
+      pairs += static_cast<long>(tested.size());
+      ASSERT_TRUE(candidates_cover_all_intersecting_pairs(before.px(), before.py(), before.r(), tested));
       const Circles got = e.world().circles(), want = reference.circles();
       for (std::size_t k = 0; k < n; ++k)
         for (std::size_t f = 0; f < 5; ++f)
@@ -298,10 +301,12 @@ void agrees_or_overflows_like_the_oracle(const Circles& w) {
   Engine e{World{w}};
   const auto overflow = first_overflow(want);
   RC_TAG(overflow ? "overflow" : "finite");
+  const std::vector<CandidatePair> tested = e.candidates();
   try {
     e.step();
   } catch (const PositionOverflow& error) {
     RC_ASSERT(overflow.has_value());
+    RC_ASSERT(error.step == 1u);
     RC_ASSERT(error.index == overflow->first);
     RC_ASSERT(std::string(error.field) == overflow->second);
     RC_ASSERT(e.world().circles() == w);
@@ -310,7 +315,7 @@ void agrees_or_overflows_like_the_oracle(const Circles& w) {
   RC_ASSERT(!overflow.has_value());
   const Circles got = e.world().circles();
   RC_ASSERT(got == want);  // std::array<double> == compares by value: −0 == +0
-  RC_ASSERT(candidates_cover_all_intersecting_pairs(World{w}.px(), World{w}.py(), World{w}.r(), e.last_candidates()));
+  RC_ASSERT(candidates_cover_all_intersecting_pairs(World{w}.px(), World{w}.py(), World{w}.r(), tested));
 }
 
 // The property suite's worlds (lattice coordinates, copies, ties, exact axis and 3-4-5 tangencies, some
@@ -411,15 +416,38 @@ TEST(engine, agrees_with_the_rounded_oracle_on_random_worlds_of_64_to_120_circle
   }
 }
 
-TEST(engine, outward_bounds_contain_the_exact_interval) {
-  const double t = std::numeric_limits<double>::denorm_min();
+TEST(engine, outward_bounds_contain_the_exact_interval_within_a_few_ulps) {
+  // Each bound is on the correct side of the exact x ∓ r (checked in rationals) and at most 3 ulps outside.
+  // Three ulps toward `to`, held within ±DBL_MAX (the exact x ∓ r are within it too).
+  const auto three_ulps = [](double x, double to) {
+    for (int k = 0; k < 3; ++k) x = std::nextafter(x, to);
+    return std::clamp(x, -DBL_MAX, DBL_MAX);
+  };
+  const auto check = [&](double x, double r) {
+    const double lo = outward_lower(x, r), hi = outward_upper(x, r);
+    const spec::Q exact_lo = spec::exact(x) - spec::exact(r), exact_hi = spec::exact(x) + spec::exact(r);
+    if (std::isfinite(lo)) {
+      EXPECT_LE(spec::exact(lo), exact_lo) << hex(x) << " " << hex(r);
+      EXPECT_GE(spec::exact(three_ulps(lo, kInf)), exact_lo) << hex(x) << " " << hex(r);
+    }
+    if (std::isfinite(hi)) {
+      EXPECT_GE(spec::exact(hi), exact_hi) << hex(x) << " " << hex(r);
+      EXPECT_LE(spec::exact(three_ulps(hi, -kInf)), exact_hi) << hex(x) << " " << hex(r);
+    }
+  };
+  std::mt19937_64 g(414);
+  for (int k = 0; k < 20000; ++k) {
+    const double x = std::ldexp(uniform(g, -1, 1), static_cast<int>(integer(g, -1074, 1023)));
+    const double r = std::ldexp(uniform(g, 0, 1), static_cast<int>(integer(g, -1074, 1023)));
+    check(x, r);
+  }
+  for (const double x : {0.0, -0.0, 1.0, 0x1p-1074, -0x1p-1022, DBL_MAX, -DBL_MAX, 0x1p52, 0x1.8p-1060})
+    for (const double r : {0.0, 0x1p-1074, 0x1p-60, 1.0, DBL_MAX}) check(x, r);
   EXPECT_LT(outward_lower(1.0, 0.0), 1.0);
   EXPECT_GT(outward_upper(1.0, 0.0), 1.0);
-  EXPECT_EQ(outward_lower(0.0, 0.0), -t);
-  EXPECT_EQ(outward_upper(-DBL_MAX, DBL_MAX), t);
+  EXPECT_EQ(outward_lower(0.0, 0.0), -0x1p-1073);
   EXPECT_EQ(outward_lower(-DBL_MAX, DBL_MAX), -kInf);
   EXPECT_EQ(outward_upper(DBL_MAX, 1.0), kInf);
-  EXPECT_EQ(outward_lower(1.0, 0x1p-60), std::nextafter(1.0, 0.0));
 }
 
 TEST(engine, throws_position_overflow_naming_the_circle_and_leaves_the_world_unchanged) {
@@ -432,7 +460,8 @@ TEST(engine, throws_position_overflow_naming_the_circle_and_leaves_the_world_unc
   ASSERT_TRUE(own);
   EXPECT_EQ(own->index, 2u);
   EXPECT_STREQ(own->field, "py");
-  EXPECT_NE(std::string(own->what()).find("circle 2, field py"), std::string::npos) << own->what();
+  EXPECT_EQ(own->step, 1u);
+  EXPECT_STREQ(own->what(), "step 1, circle 2, field py: the position p + v/60 overflows to infinity");
   EXPECT_EQ(e.world().circles(), w);
   // Circle 1 overflows by the velocity it takes from circle 2, which it touches; circle 2 takes circle 1's
   // velocity 0 and stays. Circle 3 overflows in x by its own velocity; the error names the first, circle 1.
