@@ -1,0 +1,25 @@
+#include "impl/state_hash.hpp"
+
+#include <bit>
+
+namespace circles::impl {
+
+void StateHash::add(std::span<const std::array<double, 5>> world) noexcept {
+  for (const std::array<double, 5>& circle : world)
+    for (const double field : circle) {
+      // x + 0.0 is +0 for x = ±0 and x for every other finite x (round to nearest): the ±0 policy.
+      const std::uint64_t bits = std::bit_cast<std::uint64_t>(field + 0.0);
+      for (int byte = 0; byte < 8; ++byte) {  // least significant byte first, whatever the host's order
+        h_ ^= (bits >> (8 * byte)) & 0xff;
+        h_ *= kFnvPrime;
+      }
+    }
+}
+
+std::uint64_t state_hash(std::span<const std::array<double, 5>> world) noexcept {
+  StateHash h;
+  h.add(world);
+  return h.value();
+}
+
+}  // namespace circles::impl

@@ -1,0 +1,35 @@
+// The canonical state hash: a cheap way for any language to compare worlds and trajectories bit for bit
+// (docs/formats.md, "State hash").
+//
+//   bytes(world)  for each circle in index order, for each field px, py, vx, vy, r in that order: the field's
+//                 IEEE 754 binary64 encoding as 8 bytes, least significant byte first, with −0 written as +0
+//                 (the oracle compares by value, so −0 and +0 are the same state).
+//   state_hash    FNV-1a, 64 bits, of bytes(world): offset basis 0xcbf29ce484222325, prime 0x100000001b3.
+//   trajectory    FNV-1a, 64 bits, of bytes(world 0) bytes(world 1) … bytes(world N), one running hash.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace circles::impl {
+
+inline constexpr std::uint64_t kFnvOffsetBasis = 0xcbf29ce484222325;  // FNV-1a 64-bit parameters
+inline constexpr std::uint64_t kFnvPrime = 0x100000001b3;
+
+// A running FNV-1a hash over canonical world bytes.
+class StateHash {
+ public:
+  // Adds bytes(world).
+  void add(std::span<const std::array<double, 5>> world) noexcept;
+  std::uint64_t value() const noexcept { return h_; }
+
+ private:
+  std::uint64_t h_ = kFnvOffsetBasis;
+};
+
+// state_hash(world) = FNV-1a of bytes(world).
+std::uint64_t state_hash(std::span<const std::array<double, 5>> world) noexcept;
+
+}  // namespace circles::impl
