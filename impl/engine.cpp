@@ -382,9 +382,9 @@ bool BasicEngine<A>::quiet_for(std::uint64_t horizon) {
     reach = std::max({reach, std::fabs(now_.px[t]), std::fabs(now_.py[t])});
   }
   const auto steps = static_cast<double>(horizon);
-  // |p| over the horizon is at most reach + steps·speed·kSpeedBound (every move's rounding is inside the
-  // bound), doubled for the drift term's own slack.
-  const double far = 2 * (reach + steps * speed * kSpeedBound);
+  // |p| over the horizon is at most reach + steps·speed·kSpeedBound, up to the drift, which is a 2^-50
+  // fraction per step: kDriftBound's eightfold margin over half an ulp covers it for horizons below 2^40.
+  const double far = reach + steps * speed * kSpeedBound;
   const double delta = steps * (speed * kSpeedBound + far * kDriftBound + kDriftAbsolute);
   if (!std::isfinite(delta)) return false;
   std::vector<double> inflated(n);

@@ -1,0 +1,115 @@
+// EngineOptions change the work, never the bits: skipped quiet steps and thread counts (the golden tests
+// cover whole trajectories in every build; these look at the quiet-step proof where it is tight).
+#include "impl/engine.hpp"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <vector>
+
+#include "spec/oracle.hpp"
+#include "tests/thrown.hpp"
+
+namespace circles::impl {
+namespace {
+
+using Circles = std::vector<std::array<double, 5>>;
+
+// Steps a skipping and a non-skipping engine side by side and requires the same bits after every step;
+// returns the step (1-based) at which circle 0 first changed velocity, or 0.
+int lockstep(const Circles& w, int steps, std::uint64_t& quiet) {
+  Engine skipping{World{w}, {1, true}};
+  Engine every{World{w}, {1, false}};
+  int first_change = 0;
+  for (int s = 1; s <= steps; ++s) {
+    skipping.step();
+    every.step();
+    const Circles a = skipping.world().circles(), b = every.world().circles();
+    for (std::size_t k = 0; k < a.size(); ++k)
+      for (std::size_t f = 0; f < 5; ++f)
+        EXPECT_EQ(std::bit_cast<std::uint64_t>(a[k][f]), std::bit_cast<std::uint64_t>(b[k][f]))
+            << "step " << s << ", circle " << k << ", field " << f;
+    if (first_change == 0 && a[0][2] != w[0][2]) first_change = s;
+  }
+  quiet = skipping.quiet_steps();
+  EXPECT_EQ(every.quiet_steps(), 0u);
+  return first_change;
+}
+
+TEST(engine_options, quiet_steps_stop_exactly_at_a_tangency_reached_after_many_steps) {
+  // Two unit circles 2 + 2·K apart close the gap by exactly 2 per step (v = ±60: every move is exact), so
+  // world K is the first in which they touch, exactly tangent; the step from it exchanges their velocities.
+  for (const int k : {1, 7, 100, 1000, 4097}) {
+    const double gap = 2 + 2.0 * k;
+    const Circles w{{0, 0, 60, 0, 1}, {gap, 0, -60, 0, 1}};
+    std::uint64_t quiet = 0;
+    EXPECT_EQ(lockstep(w, k + 3, quiet), k + 1) << "K = " << k;
+    if (k >= 100) {
+      EXPECT_GT(quiet, 0u) << "K = " << k << ": no step was skipped";
+    }
+    // The oracle agrees on the moment: world K is tangent.
+    Circles now = w;
+    for (int s = 0; s < k; ++s) now = spec::resolved_step_rounded(now);
+    EXPECT_EQ(now[1][0] - now[0][0], 2.0);
+  }
+}
+
+TEST(engine_options, quiet_steps_stop_in_time_for_moves_no_double_holds) {
+  // v = 1 moves 1/60 per step, never exact: positions are rounded every step. The circles meet after about
+  // 60·gap/2 steps; both engines must see the first contact in the same world.
+  for (const double gap : {2.5, 3.0, 10.0, 40.0}) {
+    const Circles w{{0.1, 0.3, 1, 0, 1}, {0.1 + gap, 0.3, -1, 0, 1}};
+    std::uint64_t quiet = 0;
+    const int changed = lockstep(w, static_cast<int>(30 * gap) + 40, quiet);
+    EXPECT_GT(changed, 0) << "gap " << gap << ": they never met";
+    if (gap >= 10) {
+      EXPECT_GT(quiet, 0u) << "gap " << gap;
+    }
+  }
+}
+
+TEST(engine_options, quiet_steps_keep_the_overflow_error_and_its_step) {
+  // A lone circle running into DBL_MAX in quiet steps (v/60 = 2^971, one ulp of the top binade per step,
+  // from 100 ulps below DBL_MAX: step 101 overflows): the error names the step at which the oracle's position first becomes
+  // infinite, and the world stays the one before.
+  const double m = 0x1.fffffffffffffp1023;
+  const Circles w{{m - 0x1p971 * 100, 0, 0x1.ep976, 0, 1}, {0, 0, 0, 0, 1}};
+  Circles now = w;
+  int overflow_at = 0;
+  for (int s = 1; s <= 400 && overflow_at == 0; ++s) {
+    const Circles next = spec::resolved_step_rounded(now);
+    if (std::isinf(next[0][0]))
+      overflow_at = s;
+    else
+      now = next;
+  }
+  ASSERT_GT(overflow_at, 1);
+  Engine e{World{w}};
+  std::optional<PositionOverflow> error;
+  for (int s = 1; s <= 400 && !error; ++s) {
+    try {
+      e.step();
+    } catch (const PositionOverflow& caught) {
+      error = caught;
+    }
+  }
+  ASSERT_TRUE(error);
+  EXPECT_EQ(error->step, static_cast<std::uint64_t>(overflow_at));
+  EXPECT_EQ(error->index, 0u);
+  EXPECT_EQ(e.world().circles(), now);
+  EXPECT_GT(e.quiet_steps(), 0u);
+}
+
+TEST(engine_options, refuses_more_threads_than_it_supports) {
+  const auto error = testing::thrown<std::invalid_argument>([] { Engine{World{}, {Engine::kMaxThreads + 1, true}}; });
+  ASSERT_TRUE(error);
+  EXPECT_STREQ(error->what(), "EngineOptions::threads: 257 is more than 256");
+}
+
+}  // namespace
+}  // namespace circles::impl
