@@ -1,0 +1,121 @@
+// The engines' cost per circle-step (issue 3, point 5) and, in the same run, what it is measured against:
+// the same engine with naive arithmetic, all-pairs steps, a plain uniform grid, and the streaming floor.
+// Every scene is impl::random_scene(n, coverage, kSceneSeed); bench/harness.hpp says how steps are timed.
+// scripts/benchmarks runs this program and writes docs/benchmarks.md from its JSON output.
+//
+// Names are <family>/coverage:<percent>/threads:<t>/n:<circles>, and the same figures are counters, so the
+// report script needs no name parsing beyond the family.
+#include "bench/baselines.hpp"
+#include "bench/harness.hpp"
+#include "impl/engine.hpp"
+#include "impl/random_scene.hpp"
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <memory>
+#include <string>
+
+namespace circles::bench {
+namespace {
+
+constexpr std::size_t kSizes[] = {1'000, 10'000, 100'000, 1'000'000};
+constexpr double kCoverages[] = {0.01, 0.10, 0.40};
+constexpr double kTargetCoverage = 0.10;  // the issue's targets are at 10% coverage
+constexpr unsigned kThreadCounts[] = {1, 2};
+// All-pairs steps cost O(n²): 1.3 ms at 10^3 and 130 ms at 10^4 circles (issue 3), so they stop at 10^4 and
+// take fewer steps there, for about a second per repetition.
+constexpr std::size_t kAllPairsMax = 10'000;
+std::size_t all_pairs_steps(std::size_t n) { return n < kAllPairsMax ? kStepsPerStepper : 5; }
+
+std::string name(const std::string& family, double coverage, unsigned threads, std::size_t n) {
+  return family + "/coverage:" + std::to_string(std::lround(coverage * 100)) + "/threads:" + std::to_string(threads) +
+         "/n:" + std::to_string(n);
+}
+
+std::vector<std::pair<std::string, double>> labels(double coverage, unsigned threads) {
+  return {{"coverage_pct", coverage * 100}, {"engine_threads", threads}};
+}
+
+// The scene of a configuration (each copy makes its own: at most 100 copies of 10^3 circles, untimed).
+Circles scene(std::size_t n, double coverage) { return impl::random_scene(n, coverage, kSceneSeed); }
+
+template <class EngineType>
+void register_engine(const std::string& family, std::size_t n, double coverage, unsigned threads) {
+  register_steps(name(family, coverage, threads, n), n, copies_for(n, kStepsPerStepper), kStepsPerStepper,
+                 [n, coverage, threads] {
+                   return std::make_unique<EngineType>(impl::World(scene(n, coverage)),
+                                                   impl::EngineOptions{.threads = threads});
+                 },
+                 labels(coverage, threads));
+}
+
+// Wraps the reference engine's O(n²) exact step as a stepper.
+struct AllPairsExact {
+  explicit AllPairsExact(const Circles& circles) : world(circles) {}
+  void step() { world = impl::step_all_pairs(world); }
+  impl::World world;
+};
+
+template <class Stepper>
+void register_baseline(const std::string& family, std::size_t n, std::size_t copies, std::size_t steps,
+                       double coverage) {
+  register_steps(name(family, coverage, 1, n), n, copies, steps,
+                 [n, coverage] { return std::make_unique<Stepper>(scene(n, coverage)); },
+                 labels(coverage, 1));
+}
+
+void register_all() {
+  for (const std::size_t n : kSizes) {
+    for (const double coverage : kCoverages)
+      for (const unsigned threads : kThreadCounts) register_engine<impl::Engine>("engine_exact", n, coverage, threads);
+    register_engine<impl::NaiveEngine>("engine_naive", n, kTargetCoverage, 1);
+    register_baseline<UniformGrid>("uniform_grid", n, copies_for(n, kStepsPerStepper), kStepsPerStepper,
+                                   kTargetCoverage);
+    register_baseline<StreamingFloor>("streaming_floor", n, copies_for(n, kStepsPerStepper), kStepsPerStepper,
+                                      kTargetCoverage);
+    if (n <= kAllPairsMax) {
+      register_baseline<AllPairsNaive>("all_pairs_naive", n, 1, all_pairs_steps(n), kTargetCoverage);
+      register_baseline<AllPairsExact>("all_pairs_exact", n, 1, all_pairs_steps(n), kTargetCoverage);
+    }
+  }
+}
+
+// The baselines must make the decisions they claim, or their figures compare unlike work. On a crowded scene
+// (40% coverage: most circles touch another) the grid and all-pairs steps must give the same bits for a few
+// steps (same arithmetic, same decisions), and their first step's velocities must be the exact reference's
+// (the naive test differs from the exact one only within rounding of tangency, which random doubles miss).
+bool baselines_agree() {
+  constexpr std::size_t kCircles = 2000, kSteps = 3;
+  const Circles start = impl::random_scene(kCircles, 0.40, kSceneSeed);
+  AllPairsNaive all_pairs(start);
+  UniformGrid grid(start);
+  for (std::size_t s = 1; s <= kSteps; ++s) {
+    all_pairs.step();
+    grid.step();
+    if (all_pairs.circles() != grid.circles()) {
+      std::fprintf(stderr, "engine_bench: the uniform grid and all-pairs steps differ at step %zu\n", s);
+      return false;
+    }
+  }
+  AllPairsNaive first(start);
+  first.step();
+  const Circles exact = impl::step_all_pairs(impl::World(start)).circles();
+  const Circles got = first.circles();
+  for (std::size_t k = 0; k < kCircles; ++k)
+    if (got[k][2] != exact[k][2] || got[k][3] != exact[k][3]) {
+      std::fprintf(stderr, "engine_bench: circle %zu takes another velocity in the naive step than in the exact one\n",
+                   k);
+      return false;
+    }
+  return true;
+}
+
+}  // namespace
+}  // namespace circles::bench
+
+int main(int argc, char** argv) {
+  return circles::bench::bench_main(argc, argv, "engine_bench", circles::bench::baselines_agree, circles::bench::register_all);
+}
