@@ -115,7 +115,7 @@ TEST(docs, each_equation_in_spec_is_in_math_md) {
 
 TEST(docs, every_test_the_docs_name_exists) {
   const std::set<std::string> tests = tests_in_repository();
-  for (const char* doc : {"docs/math.md", "docs/spec-notes.md"})
+  for (const char* doc : {"docs/math.md", "docs/spec-notes.md", "docs/engine.md"})
     for (const std::string& t : tests_named_in(doc)) EXPECT_TRUE(tests.contains(t)) << doc << " names " << t;
 }
 
@@ -134,6 +134,36 @@ TEST(docs, each_spec_note_has_its_test_and_each_test_its_note) {
   for (const std::string& t : tests_in_repository())
     if (t.starts_with("spec_notes.")) tests.insert(t);
   EXPECT_EQ(notes, tests);
+}
+
+// docs/engine.md describes the engine by its names: every `file` it cites exists, and every `identifier` of
+// code it cites (one with an underscore, a capital or ::, in backquotes) is declared in impl/ or tests/.
+TEST(docs, engine_md_names_only_files_and_code_that_exist) {
+  std::string code;
+  for (const char* folder : {"impl", "tests"})
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(root / folder))
+      if (entry.path().extension() == ".hpp" || entry.path().extension() == ".cpp")
+        code += text_of(std::filesystem::relative(entry.path(), root));
+  const std::string doc = text_of("docs/engine.md");
+  const std::regex quoted(R"(`([^`\s]+)`)"), file(R"([\w/]+\.(?:hpp|cpp|md))"),
+      identifier(R"((?:\w+::)*(\w*(?:_|[A-Z])\w*)(?:\(\))?)");
+  int files = 0, names = 0;
+  for (std::sregex_iterator q(doc.begin(), doc.end(), quoted), end; q != end; ++q) {
+    const std::string text = (*q)[1];
+    std::smatch m;
+    if (std::regex_match(text, m, file)) {
+      const std::filesystem::path path = text.starts_with("docs/") || text.find('/') != std::string::npos
+                                             ? root / text
+                                             : root / "docs" / text;
+      EXPECT_TRUE(std::filesystem::exists(path)) << "docs/engine.md cites " << text;
+      ++files;
+    } else if (std::regex_match(text, m, identifier)) {
+      EXPECT_TRUE(std::regex_search(code, std::regex("\\b" + m[1].str() + "\\b"))) << "docs/engine.md names " << text;
+      ++names;
+    }
+  }
+  EXPECT_GE(files, 5);
+  EXPECT_GE(names, 10);
 }
 
 }  // namespace
