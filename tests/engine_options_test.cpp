@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <optional>
+#include <random>
 #include <stdexcept>
 #include <vector>
 
@@ -103,6 +104,32 @@ TEST(engine_options, quiet_steps_keep_the_overflow_error_and_its_step) {
   EXPECT_EQ(error->index, 0u);
   EXPECT_EQ(e.world().circles(), now);
   EXPECT_GT(e.quiet_steps(), 0u);
+}
+
+TEST(engine_options, threads_split_large_worlds_into_chunks_and_agree_with_the_all_pairs_reference) {
+  // 12000 circles (several chunks per thread from 2 threads on) with radii over three decades, so several
+  // grid levels and contacts that cross chunk boundaries; each step against the exact all-pairs step.
+  std::mt19937_64 g(12000);
+  std::uniform_real_distribution<double> unit(0, 1);
+  Circles w;
+  for (int k = 0; k < 12000; ++k)
+    w.push_back({1000 * unit(g), 1000 * unit(g), 200 * unit(g) - 100, 200 * unit(g) - 100,
+                 std::exp2(-2 + 9 * unit(g) * unit(g) * unit(g))});
+  for (const unsigned threads : {2u, 4u}) {
+    Engine e{World{w}, {threads, true}};
+    for (int s = 0; s < 2; ++s) {
+      const World reference = step_all_pairs(e.world());
+      e.step();
+      const Circles got = e.world().circles(), want = reference.circles();
+      std::size_t differ = 0, changed = 0;
+      for (std::size_t k = 0; k < got.size(); ++k) {
+        differ += got[k] != want[k];
+        changed += got[k][2] != w[k][2];
+      }
+      EXPECT_EQ(differ, 0u) << threads << " threads, step " << s + 1;
+      EXPECT_GT(changed, 1000u) << "too few contacts to mean anything";
+    }
+  }
 }
 
 TEST(engine_options, refuses_more_threads_than_it_supports) {
