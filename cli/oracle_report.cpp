@@ -64,8 +64,8 @@ void report_oracle(const std::vector<Circle>& scene, const std::string& scene_na
   out << std::setprecision(std::numeric_limits<double>::max_digits10);
   out << "circles: the exact oracle on " << scene_name << " (" << scene.size() << " circles, " << steps
       << " steps of Δt = 1/60)\n"
-      << "No engine is checked here yet (issue 3 wires the double engine in): this runs the oracle alone, in exact\n"
-      << "rationals.\n\n";
+      << "This part runs the oracle alone, in exact rationals; the main job (`circles` with no subcommand) then\n"
+      << "steps each engine beside the correctly rounded oracle and compares them.\n\n";
 
   const auto resolved = spec::D(spec::resolved_world(scene), steps);
   out << "resolved profile (the default: circles by index, lexicographic minimum)\n";

@@ -1,9 +1,10 @@
 #include "cli/scene.hpp"
 
+#include "cli/json_number.hpp"
+
 #include <nlohmann/json.hpp>
 
 #include <array>
-#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -13,18 +14,15 @@ extern const char* const default_scene_json;  // generated from scenes/default.j
 
 namespace {
 
-// A JSON number as a double, only if the double is its exact value (or the token was written as a decimal
-// fraction or exponent, which always means "the nearest double", as in every JSON reader).
+// A JSON number as a double by the rule of cli/json_number.hpp. The DOM keeps no token text, so an integer
+// token beyond 64 bits, which nlohmann stores as the nearest double, is taken as that double.
 double to_double(const nlohmann::json& x, const std::string& where) {
   if (x.is_number_float()) return x.get<double>();  // finite: the parser rejects overflow (out_of_range.406)
   if (x.is_number_integer()) {
-    // Integers of up to 53 bits are exact doubles; a larger one must round-trip to count as written.
-    const bool is_unsigned = x.is_number_unsigned();
-    const double d = is_unsigned ? static_cast<double>(x.get<std::uint64_t>()) : static_cast<double>(x.get<std::int64_t>());
-    const bool exact = is_unsigned ? d < 0x1p64 && static_cast<std::uint64_t>(d) == x.get<std::uint64_t>()
-                                   : d < 0x1p63 && static_cast<std::int64_t>(d) == x.get<std::int64_t>();
-    if (!exact) throw SceneError(where + ": integer " + x.dump() + " is not exactly a double");
-    return d;
+    const auto d = x.is_number_unsigned() ? json_number::from_integer(x.get<std::uint64_t>())
+                                          : json_number::from_integer(x.get<std::int64_t>());
+    if (!d) throw SceneError(where + ": " + json_number::not_exact(x.dump()));
+    return *d;
   }
   throw SceneError(where + ": expected a number, found " + std::string(x.type_name()));
 }

@@ -4,6 +4,7 @@
 #include "properties/detail/families.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <numeric>
 #include <utility>
@@ -180,6 +181,15 @@ rc::Gen<std::vector<std::size_t>> permutation(std::size_t n) {
         for (std::size_t i = 0; i < n; ++i) std::swap(perm[i], perm[i + u[i] % (n - i)]);
         return perm;
       });
+}
+
+rc::Gen<std::vector<std::array<double, 5>>> double_world(std::size_t max_size, rc::Gen<double> field) {
+  const rc::Gen<std::array<double, 5>> circle = rc::gen::map(rc::gen::tuple(field, field, field, field, field), [](const auto& t) {
+    const auto& [px, py, vx, vy, r] = t;
+    return std::array<double, 5>{px, py, vx, vy, std::fabs(r)};
+  });
+  return rc::gen::mapcat(rc::gen::inRange<std::size_t>(0, max_size + 1),
+                         [circle](std::size_t n) { return rc::gen::container<std::vector<std::array<double, 5>>>(n, circle); });
 }
 
 }  // namespace circles::properties::gen

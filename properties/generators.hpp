@@ -11,6 +11,7 @@
 
 #include <rapidcheck.h>
 
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -42,6 +43,11 @@ rc::Gen<std::vector<spec::Circle>> distinct_world(spec::Radii radii, std::size_t
 // time the componentwise minimum of its circles is added at a random place (unless it is there already).
 // That circle is below every other under (6), so (8) is defined on at least half the sets with |S| >= 2.
 rc::Gen<std::vector<spec::Circle>> set_for_e(spec::Radii radii, std::size_t max_size = 5);
+
+// A world of 0 … max_size circles in doubles, [px, py, vx, vy, r], every field drawn from `field` and the radius
+// made |field| (so r ≥ 0): worlds for the engines and the protocol, which take doubles.
+// Shrinks by dropping circles and shrinking fields.
+rc::Gen<std::vector<std::array<double, 5>>> double_world(std::size_t max_size, rc::Gen<double> field);
 
 // A permutation of 0 … n-1, uniformly; shrinks towards the identity. Apply it with permute().
 rc::Gen<std::vector<std::size_t>> permutation(std::size_t n);

@@ -339,18 +339,10 @@ RC_GTEST_PROP(engine, agrees_with_the_rounded_oracle_on_every_world_the_property
 // in three from values at the overflow threshold of p + v/60: DBL_MAX + 60·2^970/60 is the tie at
 // 2^1024(1 − 2^-54), which rounds to +infinity (even), and one ulp less of v stays at DBL_MAX.
 RC_GTEST_PROP(engine, agrees_with_the_rounded_oracle_or_reports_its_first_overflow_on_arbitrary_finite_doubles, ()) {
-  const auto n = *rc::gen::inRange<std::size_t>(0, 9);
   const double tie = 0x1.ep975;  // 60·2^970
   const auto field = rc::gen::oneOf(properties::gen::finite_double(), properties::gen::finite_double(),
                                     rc::gen::element(DBL_MAX, -DBL_MAX, 0x1p1023, tie, -tie, std::nextafter(tie, 0.0)));
-  Circles w;
-  for (std::size_t k = 0; k < n; ++k) {
-    std::array<double, 5> c{};
-    for (double& x : c) x = *field;
-    c[4] = std::fabs(c[4]);
-    w.push_back(c);
-  }
-  agrees_or_overflows_like_the_oracle(w);
+  agrees_or_overflows_like_the_oracle(*properties::gen::double_world(8, field));
 }
 
 TEST(engine, validator_reports_a_missing_intersecting_pair) {

@@ -1,0 +1,216 @@
+#include "cli/protocol.hpp"
+
+#include "cli/json_number.hpp"
+#include "spec/outside_c.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <optional>
+#include <utility>
+
+namespace circles::cli {
+
+ProtocolError::ProtocolError(std::size_t line_number, const std::string& why)
+    : std::runtime_error("line " + std::to_string(line_number) + ": " + why), line(line_number), reason(why) {}
+
+namespace {
+
+constexpr std::size_t kFields = 5;  // [px, py, vx, vy, r]
+
+// {"id": N, "circles": [[px, py, vx, vy, r], ...]}, for messages.
+std::string line_shape(std::string_view counter) {
+  return "{\"" + std::string(counter) + "\": N, \"circles\": [[px, py, vx, vy, r], ...]}";
+}
+
+// The SAX events of nlohmann::json::sax_parse, checked against the grammar of a line as they come:
+//   line   = { counter : integer, "circles" : [ circle, ... ] }    (keys in either order)
+//   circle = [ number, number, number, number, number ]
+// The first event out of place stops the parse with its reason, so a deeply nested input is refused at its
+// fourth '[' rather than built; nlohmann's SAX parser keeps its own nesting on the heap, not the stack.
+class Reader {
+ public:
+  explicit Reader(std::string_view counter) : counter_(counter) {}
+
+  Line line;
+  std::optional<std::string> error;  // the reason, once an event was refused
+
+  bool null() { return unexpected("null"); }
+  bool boolean(bool b) { return unexpected(b ? "true" : "false"); }
+  bool string(std::string&) { return unexpected("a string"); }
+  bool binary(nlohmann::json::binary_t&) { return unexpected("binary data"); }
+
+  bool number_integer(std::int64_t n) {
+    if (state_ == State::counter && n >= 0) return counter(static_cast<std::uint64_t>(n));  // "-0" is 0
+    return integer_field(n);
+  }
+  bool number_unsigned(std::uint64_t n) {
+    if (state_ == State::counter) return counter(n);
+    return integer_field(n);
+  }
+  bool number_float(double x, const std::string& token) {
+    if (state_ != State::circle || field_ == kFields) return unexpected(token);
+    const auto d = json_number::from_float_token(x, token);
+    return d ? field(*d) : fail(field_name() + ": " + json_number::not_exact(token));
+  }
+
+  bool start_object(std::size_t) {
+    if (state_ != State::top) return unexpected("an object");
+    state_ = State::object;
+    return true;
+  }
+  bool key(std::string& k) {
+    bool* seen = k == counter_ ? &seen_counter_ : k == "circles" ? &seen_circles_ : nullptr;
+    if (!seen) return fail("unexpected key \"" + k + "\" (a line has exactly the keys " + keys() + ")");
+    if (*seen) return fail("duplicate key \"" + k + "\"");
+    *seen = true;
+    state_ = k == counter_ ? State::counter : State::circles;
+    return true;
+  }
+  bool end_object() {
+    state_ = State::done;
+    if (!seen_counter_) return fail("missing key \"" + std::string(counter_) + "\"");
+    if (!seen_circles_) return fail("missing key \"circles\"");
+    return true;
+  }
+
+  bool start_array(std::size_t) {
+    if (state_ == State::circles) {
+      state_ = State::list;
+      return true;
+    }
+    if (state_ == State::list) {
+      state_ = State::circle;
+      field_ = 0;
+      return true;
+    }
+    return unexpected("an array");
+  }
+  bool end_array() {
+    if (state_ == State::list) {  // the end of "circles"
+      state_ = State::object;
+      return true;
+    }
+    // The end of a circle: only circle and list states have open arrays.
+    if (field_ != kFields)
+      return fail(circle_name() + ": expected 5 numbers [px, py, vx, vy, r], found " + std::to_string(field_));
+    try {
+      spec::check_doubles(fields_, line.circles.size(), spec::Radii::non_negative);
+    } catch (const spec::OutsideC& e) {
+      return fail(e.what());
+    }
+    line.circles.push_back(fields_);
+    state_ = State::list;
+    return true;
+  }
+
+  bool parse_error(std::size_t position, const std::string& token, const nlohmann::json::exception& e) {
+    // 406 is the one out_of_range error of the parser: a number token beyond the double range.
+    if (e.id == 406) return fail(expectation().first + token + " is beyond the double range");
+    return fail("malformed JSON at column " + std::to_string(position) + ": " + parser_reason(e.what()));
+  }
+
+ private:
+  enum class State { top, object, counter, circles, list, circle, done };
+
+  bool counter(std::uint64_t n) {
+    line.number = n;
+    state_ = State::object;
+    return true;
+  }
+
+  template <class Integer>
+  bool integer_field(Integer n) {
+    if (state_ != State::circle || field_ == kFields) return unexpected(std::to_string(n));
+    const auto d = json_number::from_integer(n);
+    return d ? field(*d) : fail(field_name() + ": " + json_number::not_exact(std::to_string(n)));
+  }
+
+  bool field(double x) {
+    fields_[field_++] = x;
+    return true;
+  }
+
+  // Where the parser is, as a message prefix ("circle 2, field vx: "), and what it expects there.
+  std::pair<std::string, std::string> expectation() const {
+    switch (state_) {
+      case State::top: return {"", "an object " + shape()};
+      case State::counter: return {"\"" + std::string(counter_) + "\": ", "an integer from 0 to 18446744073709551615"};
+      case State::circles: return {"\"circles\": ", "an array of circles [px, py, vx, vy, r]"};
+      case State::list: return {circle_name() + ": ", "an array [px, py, vx, vy, r]"};
+      case State::circle:
+        if (field_ == kFields) return {circle_name() + ": ", "5 numbers [px, py, vx, vy, r]"};
+        return {field_name() + ": ", "a number"};
+      case State::object:
+      case State::done:
+        break;  // the parser reports only keys and the closing brace here, never a value
+    }
+    return {"", "a key or '}'"};
+  }
+
+  // Refuses a value where the state expects something else: "circle 2, field vx: expected a number, found
+  // a string". A value after the fifth of a circle is "found more".
+  bool unexpected(const std::string& found) {
+    const auto [where, expected] = expectation();
+    const bool extra = state_ == State::circle && field_ == kFields;
+    return fail(where + "expected " + expected + ", found " + (extra ? "more" : found));
+  }
+
+  bool fail(const std::string& reason) {
+    error = reason;
+    return false;
+  }
+
+  std::string keys() const { return "\"" + std::string(counter_) + "\" and \"circles\""; }
+  std::string shape() const { return line_shape(counter_); }
+  std::string circle_name() const { return "circle " + std::to_string(line.circles.size()); }
+  std::string field_name() const { return circle_name() + ", field " + spec::name(spec::Field(field_)); }
+
+  // nlohmann's message without its own prefix "[json.exception.parse_error.101] parse error at line 1,
+  // column 29: ", whose position we give ourselves (the line is the protocol's, not nlohmann's).
+  static std::string parser_reason(const std::string& what) {
+    const std::size_t column = what.find("column ");
+    const std::size_t colon = what.find(": ", column == std::string::npos ? 0 : column);
+    return colon == std::string::npos ? what : what.substr(colon + 2);
+  }
+
+  std::string_view counter_;
+  State state_ = State::top;
+  bool seen_counter_ = false, seen_circles_ = false;
+  std::array<double, kFields> fields_{};
+  std::size_t field_ = 0;
+};
+
+}  // namespace
+
+Line parse_line(std::string_view text, std::size_t line_number, std::string_view counter) {
+  if (text.find_first_not_of(" \t\r\n") == std::string_view::npos)
+    throw ProtocolError(line_number, "empty line, expected an object " + line_shape(counter));
+  Reader reader(counter);
+  if (!nlohmann::json::sax_parse(text, &reader)) throw ProtocolError(line_number, reader.error.value_or("unreadable"));
+  return std::move(reader.line);
+}
+
+void append_line(std::string& out, std::string_view counter, std::uint64_t number, const Circles& circles) {
+  out += "{\"";
+  out += counter;
+  out += "\":";
+  out += std::to_string(number);
+  out += ",\"circles\":[";
+  for (std::size_t k = 0; k < circles.size(); ++k) {
+    out += k ? ",[" : "[";
+    for (std::size_t j = 0; j < kFields; ++j) {
+      if (j) out += ',';
+      json_number::append(out, circles[k][j]);
+    }
+    out += ']';
+  }
+  out += "]}";
+}
+
+std::string format_line(std::string_view counter, std::uint64_t number, const Circles& circles) {
+  std::string out;
+  append_line(out, counter, number, circles);
+  return out;
+}
+
+}  // namespace circles::cli

@@ -1,0 +1,36 @@
+// `circles serve`: an engine behind the step protocol (cli/protocol.hpp, docs/protocol.md), so that any
+// checker can test it: one request per line on the input, one flushed response line each.
+#pragma once
+
+#include "cli/engines.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <iosfwd>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace circles::cli {
+
+// A request whose image has a position beyond the double range, so that no response can be written.
+// what(): "line 4 (id 7): circle 2, field px: the position p + v/60 overflows to infinity".
+class RequestOverflow : public std::overflow_error {
+ public:
+  RequestOverflow(std::size_t line, std::uint64_t id, std::size_t index, spec::Field field);
+  std::size_t line;
+  std::uint64_t id;
+  std::size_t index;
+  spec::Field field;
+};
+
+// The response line (without its newline) to one request line, number `line_number`: what serve writes for
+// it. Throws ProtocolError for a malformed request and RequestOverflow.
+std::string answer(const EngineEntry& engine, unsigned threads, std::string_view request, std::size_t line_number);
+
+// Answers every line of `in` on `out`, flushing each response, until the end of `in`. Returns the exit code:
+// 0 at the end of the input, 2 after a malformed request or an overflow, which it names on `err` (nothing is
+// written to `out` for that line, and the lines after it are not read).
+int serve(const EngineEntry& engine, unsigned threads, std::istream& in, std::ostream& out, std::ostream& err);
+
+}  // namespace circles::cli

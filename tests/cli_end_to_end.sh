@@ -1,0 +1,107 @@
+#!/bin/sh
+# End-to-end checks of `circles serve` and `circles run` (tests/CMakeLists.txt runs one case per test):
+#   cli_end_to_end.sh PATH/TO/circles CASE
+# Each case exits 0 when the program behaves as docs/protocol.md says, and names what differs otherwise.
+set -eu
+circles=$1
+case_name=$2
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+
+fail() {
+  echo "FAIL: $*" >&2
+  exit 1
+}
+
+# expect_exit CODE COMMAND...: runs COMMAND, which must exit with CODE.
+expect_exit() {
+  want=$1
+  shift
+  set +e
+  "$@"
+  got=$?
+  set -e
+  [ "$got" -eq "$want" ] || fail "$* exited $got, expected $want"
+}
+
+# Circle 1 moves by exactly 2^1017 per step from DBL_MAX - 3 * 2^1017 (0x1.f3fffffffffffp+1023) at
+# v = 60 * 2^1017 (0x1.ep+1022): it reaches DBL_MAX in w_3, and step 4 overflows (cli_run_test.cpp derives it).
+overflow_scene='{"circles": [[0, 0, 0, 0, 1], [1.7555597020139802e+308, -5, 8.426686569667106e+307, 0, 1]]}'
+
+case $case_name in
+serve_answers_a_trace_with_its_next_worlds_identically_with_both_engines)
+  # w_0 ... w_300 of the default scene as requests (a trace line with "id" for "step"): the responses are
+  # w_1 ... w_301, the same bytes from the double engine (2 threads) and the oracle, under the same ids.
+  "$circles" run --steps 300 --engine double --trace "$dir/trace.jsonl" >/dev/null
+  sed 's/^{"step"/{"id"/' "$dir/trace.jsonl" >"$dir/requests.jsonl"
+  "$circles" serve --engine oracle <"$dir/requests.jsonl" >"$dir/oracle.jsonl"
+  "$circles" serve --engine double --threads 2 <"$dir/requests.jsonl" >"$dir/double.jsonl"
+  [ "$(wc -l <"$dir/oracle.jsonl")" -eq 301 ] || fail "the oracle did not answer 301 requests"
+  cmp "$dir/oracle.jsonl" "$dir/double.jsonl" || fail "the engines' responses differ"
+  cut -d, -f1 "$dir/requests.jsonl" >"$dir/request-ids"
+  cut -d, -f1 "$dir/double.jsonl" >"$dir/response-ids"
+  cmp "$dir/request-ids" "$dir/response-ids" || fail "a response has another id than its request"
+  sed '1d; s/^{"step":[0-9]*,//' "$dir/trace.jsonl" >"$dir/next-worlds"
+  sed '$d; s/^{"id":[0-9]*,//' "$dir/double.jsonl" >"$dir/responses"
+  cmp "$dir/next-worlds" "$dir/responses" || fail "a response is not the trace's next world"
+  ;;
+serve_exits_0_at_the_end_of_an_empty_input)
+  "$circles" serve </dev/null >"$dir/out"
+  [ ! -s "$dir/out" ] || fail "serve wrote something for no request"
+  ;;
+serve_exits_2_naming_the_line_of_a_malformed_request)
+  printf '{"id": 1, "circles": [[0, 0, 0, 0, 1]]}\n{"id": 2, "circles": [[0, 0, 0, 0, 1, 1]]}\n{"id": 3, "circles": []}\n' \
+    >"$dir/requests"
+  expect_exit 2 sh -c '"$1" serve <"$2" >"$3" 2>"$4"' sh "$circles" "$dir/requests" "$dir/out" "$dir/err"
+  [ "$(cat "$dir/out")" = '{"id":1,"circles":[[0.0,0.0,0.0,0.0,1.0]]}' ] || fail "wrong responses: $(cat "$dir/out")"
+  [ "$(cat "$dir/err")" = 'circles serve: malformed request, line 2: circle 0: expected 5 numbers [px, py, vx, vy, r], found more' ] ||
+    fail "wrong message: $(cat "$dir/err")"
+  ;;
+serve_exits_2_naming_an_overflow)
+  printf '{"id": 7, "circles": [[0, 0, 0, 0, 1], [1.7976931348623157e308, 0, 1e308, 0, 1]]}\n' >"$dir/requests"
+  expect_exit 2 sh -c '"$1" serve --engine double <"$2" >"$3" 2>"$4"' sh "$circles" "$dir/requests" "$dir/out" "$dir/err"
+  [ ! -s "$dir/out" ] || fail "serve answered an overflowing request"
+  [ "$(cat "$dir/err")" = 'circles serve: line 1 (id 7): circle 1, field px: the position p + v/60 overflows to infinity; the step of this request has no finite image in doubles, so there is no response to write' ] ||
+    fail "wrong message: $(cat "$dir/err")"
+  ;;
+run_writes_the_same_trace_with_the_double_engine_as_with_the_oracle)
+  "$circles" run --steps 120 --engine double --threads 1 --trace "$dir/double.jsonl" >"$dir/summary"
+  "$circles" run --steps 120 --engine oracle --trace "$dir/oracle.jsonl" >/dev/null
+  [ "$(wc -l <"$dir/double.jsonl")" -eq 121 ] || fail "the trace does not hold w_0 to w_120"
+  cmp "$dir/double.jsonl" "$dir/oracle.jsonl" || fail "the traces differ"
+  grep -Eq '^circles run: the embedded default scene: 120 steps of 10 circles with the double engine \(1 thread\): [0-9.e+-]+ s stepping, [0-9.e+-]+ ns per circle-step$' "$dir/summary" ||
+    fail "wrong summary: $(cat "$dir/summary")"
+  [ "$(ls "$dir" | wc -l)" -eq 3 ] || fail "files left behind: $(ls "$dir")"
+  ;;
+run_exits_2_on_an_overflow_keeping_the_trace_before_it)
+  printf '%s\n' "$overflow_scene" >"$dir/scene.json"
+  expect_exit 2 sh -c '"$1" run "$2" --steps 10 --trace "$3" >/dev/null 2>"$4"' sh "$circles" "$dir/scene.json" "$dir/t.jsonl" "$dir/err"
+  [ "$(wc -l <"$dir/t.jsonl")" -eq 4 ] || fail "the trace does not hold w_0 to w_3"
+  grep -qF '{"step":3,"circles":[[0.0,0.0,0.0,0.0,1.0],[1.7976931348623157e+308,-5.0,8.426686569667106e+307,0.0,1.0]]}' "$dir/t.jsonl" ||
+    fail "w_3 is not at DBL_MAX: $(tail -n 1 "$dir/t.jsonl")"
+  [ "$(cat "$dir/err")" = "circles run: step 4, circle 1, field px: the position p + v/60 overflows to infinity; stopped after 3 steps, and the trace $dir/t.jsonl holds w_0 to w_3" ] ||
+    fail "wrong message: $(cat "$dir/err")"
+  [ "$(ls "$dir" | wc -l)" -eq 3 ] || fail "files left behind: $(ls "$dir")"
+  ;;
+run_exits_2_leaving_no_file_when_the_trace_cannot_be_written)
+  expect_exit 2 sh -c '"$1" run --steps 3 --trace "$2" >/dev/null 2>"$3"' sh "$circles" "$dir/missing/t.jsonl" "$dir/err"
+  grep -q "^circles: trace $dir/missing/t.jsonl: cannot create $dir/missing/t.jsonl.partial-" "$dir/err" ||
+    fail "wrong message: $(cat "$dir/err")"
+  [ "$(ls "$dir")" = err ] || fail "files left behind: $(ls "$dir")"
+  ;;
+run_and_serve_exit_2_listing_the_engines_for_an_unknown_one)
+  for command in run serve; do
+    expect_exit 2 sh -c '"$1" "$2" --engine fast </dev/null >/dev/null 2>"$3"' sh "$circles" "$command" "$dir/err"
+    grep -qF -- '--engine: unknown engine "fast" (the engines are: double, oracle)' "$dir/err" ||
+      fail "wrong message: $(cat "$dir/err")"
+  done
+  ;;
+main_job_exits_0_with_every_engine_in_agreement)
+  "$circles" >"$dir/out"
+  grep -qx 'double engine: agrees with the correctly rounded oracle at each of the 100 steps' "$dir/out" ||
+    fail "no agreement line: $(tail -n 3 "$dir/out")"
+  ;;
+*)
+  fail "no case $case_name"
+  ;;
+esac

@@ -1,0 +1,331 @@
+// The engine registry, `circles serve`'s line handling and `circles run`'s trace (cli/engines.hpp,
+// cli/serve.hpp, cli/run.hpp), each held to spec::resolved_step_rounded, the correctly rounded oracle step.
+#include "cli/engines.hpp"
+#include "cli/protocol.hpp"
+#include "cli/run.hpp"
+#include "cli/scene.hpp"
+#include "cli/serve.hpp"
+
+#include "properties/generators.hpp"
+#include "spec/oracle.hpp"
+#include "tests/thrown.hpp"
+
+#include <gtest/gtest.h>
+#include <rapidcheck.h>
+#include <rapidcheck/gtest.h>
+
+#include <unistd.h>
+
+#include <cfloat>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace circles::cli {
+namespace {
+
+using circles::testing::thrown;
+
+// Two circles that touch (distance 2 = 1 + 1) and exchange velocities, and one alone.
+const Circles kTouching{{0, 0, 1, 0, 1}, {2, 0, -1, 0, 1}, {10, 10, 0, 60, 0}};
+
+// Circle 1 moves by exactly 2^1017 per step (v = 60 · 2^1017, so v/60 is exact) from DBL_MAX − 3 · 2^1017:
+// w_3 puts it at DBL_MAX exactly, and step 4 would take it to DBL_MAX + 2^1017, beyond the rounding boundary
+// DBL_MAX + 2^970 (half an ulp of DBL_MAX), so to infinity. Every sum before is exact (multiples of 2^971).
+const Circles kOverflowsAtStep4{{0, 0, 0, 0, 1}, {DBL_MAX - 3 * 0x1p1017, -5, 60 * 0x1p1017, 0, 1}};
+
+// w_0, w_1, ..., w_n by the oracle, each step from the previous rounded world.
+std::vector<Circles> oracle_worlds(const Circles& w0, std::size_t n) {
+  std::vector<Circles> worlds{w0};
+  for (std::size_t t = 0; t < n; ++t) worlds.push_back(spec::resolved_step_rounded(worlds.back()));
+  return worlds;
+}
+
+std::vector<std::string> lines_of(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+// A fresh directory for one test's files, removed at the end.
+struct TempDir {
+  std::filesystem::path path;
+  TempDir() {
+    std::string name = (std::filesystem::temp_directory_path() / "circles-cli-test-XXXXXX").string();
+    path = mkdtemp(name.data()) ? name : throw std::runtime_error("mkdtemp failed");
+  }
+  ~TempDir() { std::filesystem::remove_all(path); }
+  std::vector<std::string> files() const {
+    std::vector<std::string> names;
+    for (const auto& e : std::filesystem::directory_iterator(path)) names.push_back(e.path().filename().string());
+    return names;
+  }
+};
+
+TEST(engines, lists_the_double_engine_and_the_oracle) {
+  EXPECT_EQ(engine_names(), "double, oracle");
+  EXPECT_EQ(&engine("double"), find_engine("double"));
+  EXPECT_EQ(find_engine("exact"), nullptr);
+}
+
+TEST(engines, names_the_valid_engines_for_an_unknown_name) {
+  const auto e = thrown<UnknownEngine>([] { engine("fast"); });
+  ASSERT_TRUE(e);
+  EXPECT_STREQ(e->what(), R"(unknown engine "fast" (the engines are: double, oracle))");
+}
+
+TEST(engines, each_steps_like_the_rounded_oracle) {
+  const Circles want = spec::resolved_step_rounded(kTouching);
+  ASSERT_EQ(want[0][2], -1.0) << "the test world must collide";
+  for (const EngineEntry& e : engines())
+    for (const unsigned threads : {0u, 1u, 2u}) EXPECT_EQ(step_once(e, kTouching, threads), want) << e.name;
+}
+
+TEST(engines, each_reports_an_overflow_with_its_step_circle_and_field_and_keeps_the_world) {
+  for (const EngineEntry& e : engines()) {
+    const auto stepper = e.start(kOverflowsAtStep4, 1);
+    for (int t = 0; t < 3; ++t) stepper->step();
+    const Circles w3 = stepper->circles();
+    EXPECT_EQ(w3[1][0], DBL_MAX) << e.name;
+    const auto overflow = thrown<StepOverflow>([&] { stepper->step(); });
+    ASSERT_TRUE(overflow) << e.name;
+    EXPECT_EQ(overflow->step, 4u);
+    EXPECT_EQ(overflow->index, 1u);
+    EXPECT_EQ(overflow->field, spec::Field::px);
+    EXPECT_STREQ(overflow->what(), "step 4, circle 1, field px: the position p + v/60 overflows to infinity");
+    EXPECT_EQ(stepper->steps(), 3u) << e.name;
+    EXPECT_EQ(stepper->circles(), w3) << e.name;
+  }
+}
+
+TEST(serve, answers_a_request_with_the_oracles_step_under_the_same_id) {
+  for (const EngineEntry& e : engines())
+    EXPECT_EQ(answer(e, 0, format_line(kId, 42, kTouching), 1),
+              format_line(kId, 42, spec::resolved_step_rounded(kTouching)));
+}
+
+TEST(serve, names_the_line_id_circle_and_field_of_an_overflow) {
+  const Circles w = oracle_worlds(kOverflowsAtStep4, 3).back();
+  const auto e = thrown<RequestOverflow>([&] { answer(engine("double"), 1, format_line(kId, 9, w), 3); });
+  ASSERT_TRUE(e);
+  EXPECT_STREQ(e->what(), "line 3 (id 9): circle 1, field px: the position p + v/60 overflows to infinity");
+}
+
+TEST(serve, answers_each_line_until_the_end_of_input_and_exits_0) {
+  std::istringstream in(format_line(kId, 1, kTouching) + "\n" + format_line(kId, 2, {}) + "\n" +
+                        format_line(kId, 3, spec::resolved_step_rounded(kTouching)));  // no final newline
+  std::ostringstream out, err;
+  EXPECT_EQ(serve(engine("double"), 1, in, out, err), 0);
+  const auto worlds = oracle_worlds(kTouching, 2);
+  EXPECT_EQ(out.str(), format_line(kId, 1, worlds[1]) + "\n" + format_line(kId, 2, {}) + "\n" +
+                           format_line(kId, 3, worlds[2]) + "\n");
+  EXPECT_EQ(err.str(), "");
+}
+
+TEST(serve, stops_at_a_malformed_request_with_exit_2_after_answering_the_lines_before_it) {
+  std::istringstream in(format_line(kId, 1, kTouching) + "\n{\"id\": 2}\n" + format_line(kId, 3, kTouching) + "\n");
+  std::ostringstream out, err;
+  EXPECT_EQ(serve(engine("double"), 1, in, out, err), 2);
+  EXPECT_EQ(out.str(), format_line(kId, 1, spec::resolved_step_rounded(kTouching)) + "\n");
+  EXPECT_EQ(err.str(), "circles serve: malformed request, line 2: missing key \"circles\"\n");
+}
+
+TEST(serve, stops_at_an_overflow_with_exit_2) {
+  std::istringstream in(format_line(kId, 5, oracle_worlds(kOverflowsAtStep4, 3).back()) + "\n");
+  std::ostringstream out, err;
+  EXPECT_EQ(serve(engine("oracle"), 1, in, out, err), 2);
+  EXPECT_EQ(out.str(), "");
+  EXPECT_EQ(err.str(),
+            "circles serve: line 1 (id 5): circle 1, field px: the position p + v/60 overflows to infinity; the step "
+            "of this request has no finite image in doubles, so there is no response to write\n");
+}
+
+// serve's per-line function against the oracle, on a world of doubles: the same circles by value, or the
+// overflow of the oracle's first infinite position (circles in order, px before py).
+void answers_like_the_oracle(const Circles& w) {
+  const Circles want = spec::resolved_step_rounded(w);
+  std::optional<std::pair<std::size_t, spec::Field>> first_infinite;
+  for (std::size_t k = 0; k < want.size() && !first_infinite; ++k)
+    for (const spec::Field f : {spec::Field::px, spec::Field::py})
+      if (!first_infinite && std::isinf(want[k][static_cast<std::size_t>(f)])) first_infinite.emplace(k, f);
+  const std::string request = format_line(kId, 1, w);
+  if (first_infinite) {
+    RC_TAG("overflow");
+    try {
+      answer(engine("double"), 1, request, 1);
+      RC_FAIL("no overflow reported");
+    } catch (const RequestOverflow& e) {
+      RC_ASSERT(e.index == first_infinite->first);
+      RC_ASSERT(e.field == first_infinite->second);
+    }
+    return;
+  }
+  const Line response = parse_line(answer(engine("double"), 1, request, 1), 1);
+  RC_ASSERT(response.number == 1u);
+  RC_ASSERT(response.circles == want);  // std::array<double> == compares by value: -0 == +0
+  bool contact = false;
+  for (std::size_t k = 0; k < w.size(); ++k) contact = contact || want[k][2] != w[k][2] || want[k][3] != w[k][3];
+  RC_TAG(contact ? "a circle took a new velocity" : "no contact");
+}
+
+RC_GTEST_PROP(serve, answers_like_the_oracle_on_every_world_the_property_suite_generates, ()) {
+  Circles w;
+  for (const spec::Circle& c : *properties::gen::world(spec::Radii::non_negative, 12))
+    w.push_back(spec::nearest_doubles(c));
+  // A rational beyond DBL_MAX rounds to infinity, which no request can carry: writing it is refused.
+  for (const auto& c : w)
+    for (const double x : c)
+      if (!std::isfinite(x)) {
+        RC_TAG("a coordinate beyond the double range");
+        RC_ASSERT_THROWS_AS(format_line(kId, 1, w), std::domain_error);
+        return;
+      }
+  answers_like_the_oracle(w);
+}
+
+// Fields from the suite's finite_double, and one in three ±DBL_MAX, so that positions overflow often.
+RC_GTEST_PROP(serve, answers_like_the_oracle_or_reports_its_overflow_on_arbitrary_finite_doubles, ()) {
+  const auto field = rc::gen::oneOf(properties::gen::finite_double(), properties::gen::finite_double(),
+                                    rc::gen::element(DBL_MAX, -DBL_MAX));
+  answers_like_the_oracle(*properties::gen::double_world(5, field));
+}
+
+TEST(run, writes_a_trace_of_every_world_equal_to_the_oracles) {
+  for (const EngineEntry& e : engines()) {
+    TempDir dir;
+    const auto trace = dir.path / "t.jsonl";
+    const RunResult result = run(kTouching, RunOptions{5, &e, 1, trace.string()});
+    EXPECT_EQ(result.steps, 5u);
+    EXPECT_FALSE(result.overflow);
+    const auto want = oracle_worlds(kTouching, 5);
+    const auto lines = lines_of(trace);
+    ASSERT_EQ(lines.size(), 6u) << e.name;
+    for (std::size_t t = 0; t < lines.size(); ++t) {
+      const Line line = parse_line(lines[t], t + 1, kStep);
+      EXPECT_EQ(line.number, t);
+      EXPECT_EQ(line.circles, want[t]) << e.name << ", step " << t;
+    }
+    EXPECT_EQ(dir.files(), std::vector<std::string>{"t.jsonl"}) << "a temporary file was left behind";
+  }
+}
+
+TEST(run, keeps_the_trace_of_every_step_before_an_overflow) {
+  TempDir dir;
+  const auto trace = dir.path / "t.jsonl";
+  const RunResult result = run(kOverflowsAtStep4, RunOptions{10, &engine("double"), 1, trace.string()});
+  EXPECT_EQ(result.steps, 3u);
+  ASSERT_TRUE(result.overflow);
+  EXPECT_STREQ(result.overflow->what(), "step 4, circle 1, field px: the position p + v/60 overflows to infinity");
+  const auto want = oracle_worlds(kOverflowsAtStep4, 3);
+  const auto lines = lines_of(trace);
+  ASSERT_EQ(lines.size(), 4u);
+  for (std::size_t t = 0; t < lines.size(); ++t) EXPECT_EQ(parse_line(lines[t], t + 1, kStep).circles, want[t]);
+  EXPECT_EQ(dir.files(), std::vector<std::string>{"t.jsonl"});
+}
+
+TEST(run, runs_without_a_trace) {
+  const RunResult result = run(kTouching, RunOptions{3, &engine("double"), 0, ""});
+  EXPECT_EQ(result.steps, 3u);
+  EXPECT_FALSE(result.overflow);
+}
+
+TEST(run, leaves_no_file_when_the_trace_cannot_be_created) {
+  TempDir dir;
+  const auto trace = dir.path / "missing" / "t.jsonl";
+  const auto e = thrown<TraceError>([&] { run(kTouching, RunOptions{3, &engine("double"), 1, trace.string()}); });
+  ASSERT_TRUE(e);
+  const std::string what = e->what();
+  EXPECT_TRUE(what.starts_with("trace " + trace.string() + ": cannot create " + trace.string() + ".partial-")) << what;
+  EXPECT_TRUE(what.ends_with(": No such file or directory")) << what;
+  EXPECT_TRUE(dir.files().empty());
+}
+
+// 2e-6 s over 4 steps of 5 circles is 2000 ns / 20 = 100 ns per circle-step.
+TEST(run, summarizes_steps_circles_engine_threads_and_time) {
+  RunResult result;
+  result.steps = 4;
+  result.stepping = std::chrono::duration<double>(2e-6);
+  const auto summary = [&](const char* name, unsigned threads, const std::string& trace) {
+    std::ostringstream out;
+    print_summary(result, 5, RunOptions{4, &engine(name), threads, trace}, out);
+    return out.str();
+  };
+  EXPECT_EQ(summary("double", 0, "t.jsonl"),
+            "4 steps of 5 circles with the double engine (all cores): 2e-06 s stepping, 100 ns per circle-step\n"
+            "trace: t.jsonl (w_0 to w_4, 5 lines)\n");
+  EXPECT_EQ(summary("double", 3, ""),
+            "4 steps of 5 circles with the double engine (3 threads): 2e-06 s stepping, 100 ns per circle-step\n");
+  EXPECT_EQ(summary("oracle", 0, ""),
+            "4 steps of 5 circles with the oracle engine (1 thread): 2e-06 s stepping, 100 ns per circle-step\n");
+}
+
+TEST(compare_with_oracle, finds_the_double_engine_in_agreement_on_the_default_scene) {
+  const Comparison c = compare_with_oracle(engine("double"), doubles_of(default_scene()), 100, 0);
+  EXPECT_EQ(c.steps, 100u);
+  EXPECT_FALSE(c.difference);
+  std::ostringstream out;
+  print_comparison(engine("double"), c, out);
+  EXPECT_EQ(out.str(), "double engine: agrees with the correctly rounded oracle at each of the 100 steps\n");
+}
+
+// An engine that ignores contacts: each circle keeps its velocity. Wrong at the first step with a contact.
+class NoContacts final : public Stepper {
+ public:
+  NoContacts(const Circles& w, unsigned) : w_(w) {}
+  Circles circles() const override { return w_; }
+
+ private:
+  std::optional<Overflow> advance() override {
+    for (auto& c : w_) c = {c[0] + c[2] / 60, c[1] + c[3] / 60, c[2], c[3], c[4]};
+    return std::nullopt;
+  }
+  Circles w_;
+};
+
+std::unique_ptr<Stepper> start_no_contacts(const Circles& w, unsigned threads) {
+  return std::make_unique<NoContacts>(w, threads);
+}
+const EngineEntry kNoContacts{"no-contacts", "", false, &start_no_contacts};
+
+// kTouching's circles 0 and 1 touch in w_0, so in the oracle circle 0 takes velocity -1 and moves to
+// RN(-1/60); the wrong engine moves it to RN(1/60). 1/60 = 2^-6 · 16/15 = 0x1.111...p-6, rounded down (the
+// next hex digit is 1), and its shortest decimal needs 17 digits: 0.01666666666666667 is 3.6e-18 away, more
+// than half its ulp (2^-59 ≈ 1.7e-18).
+TEST(compare_with_oracle, names_the_first_step_circle_and_field_where_an_engine_differs) {
+  const Comparison c = compare_with_oracle(kNoContacts, kTouching, 10, 1);
+  EXPECT_EQ(c.steps, 0u);
+  ASSERT_TRUE(c.difference);
+  EXPECT_EQ(*c.difference,
+            "step 1, circle 0, field px: oracle -0.016666666666666666 (-0x1.1111111111111p-6), engine "
+            "0.016666666666666666 (0x1.1111111111111p-6)");
+  std::ostringstream out;
+  print_comparison(kNoContacts, c, out);
+  EXPECT_EQ(out.str(), "no-contacts engine: DIFFERS from the correctly rounded oracle at " + *c.difference + "\n");
+}
+
+TEST(compare_with_oracle, agrees_when_both_stop_at_the_same_overflow) {
+  const Comparison c = compare_with_oracle(engine("double"), kOverflowsAtStep4, 10, 1);
+  EXPECT_EQ(c.steps, 3u);
+  EXPECT_FALSE(c.difference);
+  ASSERT_TRUE(c.overflow);
+  std::ostringstream out;
+  print_comparison(engine("double"), c, out);
+  EXPECT_EQ(out.str(),
+            "double engine: agrees with the correctly rounded oracle at each of the 3 steps, after which both stop: "
+            "step 4, circle 1, field px: the position p + v/60 overflows to infinity\n");
+}
+
+TEST(compare_with_oracle, names_an_overflow_only_one_side_reports) {
+  const Comparison c = compare_with_oracle(kNoContacts, kOverflowsAtStep4, 10, 1);
+  ASSERT_TRUE(c.difference);
+  EXPECT_EQ(*c.difference,
+            "step 4: the oracle stops at circle 1, field px: the position p + v/60 overflows to infinity, the engine "
+            "does not");
+}
+
+}  // namespace
+}  // namespace circles::cli
