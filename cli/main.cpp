@@ -1,5 +1,7 @@
 // The `circles` program. With no subcommand it runs the main job on the embedded default scene: the oracle's
 // report, then every engine checked against the correctly rounded oracle step by step.
+#include "cli/candidate.hpp"
+#include "cli/conform.hpp"
 #include "cli/engines.hpp"
 #include "cli/oracle_report.hpp"
 #include "cli/run.hpp"
@@ -8,9 +10,13 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cmath>
 #include <cstdint>
+#include <tuple>
 #include <iostream>
 #include <limits>
+#include <memory>
+#include <random>
 
 namespace {
 
@@ -71,6 +77,29 @@ int main(int argc, char** argv) {
   run->add_option("--trace", trace,
                   "Write every world to this file, one JSON line {\"step\": t, \"circles\": [...]} each");
 
+  std::string exec, level = "exact", shard = "0/1";
+  circles::cli::ConformOptions conform_options;
+  conform_options.seed = std::random_device{}();
+  double timeout = 10;
+  std::uint64_t only_case = 0;
+  CLI::App* conform = app.add_subcommand(
+      "conform", "Check an engine (--engine) or any program speaking the step protocol (--exec) against the oracle");
+  add_engine_options(conform, engine_name, threads);
+  conform->add_option("--exec", exec, "Check this program instead, run as /bin/sh -c COMMAND (docs/protocol.md)");
+  conform->add_option("--level", level, "exact (the nearest double), faithful (1 ulp) or ulps:K; decisions always exact")
+      ->capture_default_str();
+  conform->add_option("--cases", conform_options.cases, "Worlds to check")->capture_default_str();
+  conform->add_option("--seed", conform_options.seed, "Seed of the worlds (default: a random one, printed)");
+  conform->add_option("--steps", conform_options.steps, "Steps chained per world, the candidate fed its own answers")
+      ->capture_default_str()
+      ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1000000}));
+  conform->add_option("--shard", shard, "Check only the cases c with c mod n == i, for parallel jobs")
+      ->capture_default_str();
+  conform->add_option("--timeout", timeout, "Seconds to wait for each answer")
+      ->capture_default_str()
+      ->check(CLI::Range(0.001, 3600.0));
+  CLI::Option* case_option = conform->add_option("--case", only_case, "Check only this case (to replay a counterexample)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -82,6 +111,32 @@ int main(int argc, char** argv) {
     if (*serve) {
       std::ios::sync_with_stdio(false);  // serve reads and writes only through the C++ streams
       return circles::cli::serve(engine(engine_name), threads, std::cin, std::cout, std::cerr);
+    }
+    if (*conform) {
+      try {
+        conform_options.level = circles::cli::parse_level(level);
+        std::tie(conform_options.shard, conform_options.shards) = circles::cli::parse_shard(shard);
+      } catch (const std::invalid_argument& e) {
+        std::cerr << "circles conform: " << e.what() << "\n";
+        return 2;
+      }
+      if (!exec.empty() && conform->count("--engine") > 0) {
+        std::cerr << "circles conform: --engine and --exec exclude each other: check one candidate at a time\n";
+        return 2;
+      }
+      if (*case_option) conform_options.only_case = only_case;
+      try {
+        std::unique_ptr<Candidate> candidate;
+        if (exec.empty())
+          candidate = std::make_unique<EngineCandidate>(engine(engine_name), threads);
+        else
+          candidate = std::make_unique<ProcessCandidate>(
+              exec, std::chrono::milliseconds(static_cast<long long>(std::ceil(timeout * 1000))));
+        return circles::cli::conform(*candidate, conform_options, std::cout);
+      } catch (const BrokenCandidate& e) {
+        std::cerr << "circles conform: " << e.what() << "\n";
+        return 2;
+      }
     }
     const bool from_file = !scene_path.empty();
     const auto scene = from_file ? load_scene(scene_path) : default_scene();

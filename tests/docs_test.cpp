@@ -115,7 +115,7 @@ TEST(docs, each_equation_in_spec_is_in_math_md) {
 
 TEST(docs, every_test_the_docs_name_exists) {
   const std::set<std::string> tests = tests_in_repository();
-  for (const char* doc : {"docs/math.md", "docs/spec-notes.md", "docs/engine.md"})
+  for (const char* doc : {"docs/math.md", "docs/spec-notes.md", "docs/engine.md", "docs/conform.md"})
     for (const std::string& t : tests_named_in(doc)) EXPECT_TRUE(tests.contains(t)) << doc << " names " << t;
 }
 

@@ -1,0 +1,35 @@
+#!/usr/bin/env python3
+"""A correct candidate for `circles conform`: the resolved step in exact rationals.
+
+Speaks the step protocol (docs/protocol.md): one request per line on stdin, {"id": N, "circles": [[px, py, vx,
+vy, r], ...]}, one answer per line on stdout. Fraction(x) of a float is its exact value; float(Fraction) rounds
+to the nearest double, ties to even (CPython divides the integers exactly rounded), as the protocol requires.
+"""
+import json
+import sys
+from fractions import Fraction
+
+
+def touches(a, b):
+    """(3): |p_b - p_a| <= r_a + r_b, squared, exactly."""
+    dx, dy, s = b[0] - a[0], b[1] - a[1], a[4] + b[4]
+    return s * s >= dx * dx + dy * dy
+
+
+def step(world):
+    """(1): every circle from the old world; the least contact is lexicographic on (px, py, vx, vy, r), then index."""
+    w = [[Fraction(x) for x in circle] for circle in world]
+    out = []
+    for k, c in enumerate(w):
+        contacts = [j for j in range(len(w)) if j != k and touches(c, w[j])]
+        vx, vy = c[2], c[3]
+        if contacts:
+            least = min(contacts, key=lambda j: (*w[j], j))
+            vx, vy = w[least][2], w[least][3]
+        out.append([float(c[0] + vx / 60), float(c[1] + vy / 60), float(vx), float(vy), float(c[4])])
+    return out
+
+
+for line in sys.stdin:
+    request = json.loads(line)
+    print(json.dumps({"id": request["id"], "circles": step(request["circles"])}), flush=True)
