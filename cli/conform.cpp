@@ -1,6 +1,7 @@
 #include "cli/conform.hpp"
 
 #include "cli/json_number.hpp"
+#include "impl/engine.hpp"
 #include "impl/predicate.hpp"
 #include "properties/generators.hpp"
 #include "spec/circle.hpp"
@@ -83,6 +84,18 @@ rc::Gen<Circles> worlds() {
                         properties::gen::double_world(8, properties::gen::finite_double()));
 }
 
+// The expected answer: impl::step_all_pairs, the exact step with every pair tested (intersect_exact,
+// advance_rounded), which tests/engine_test.cpp holds equal to spec::resolved_step_rounded on every world the
+// property suite generates; 50-100 times faster than the oracle on these small worlds. Nothing when a position
+// leaves the double range.
+std::optional<Circles> expected_step(const Circles& w) {
+  try {
+    return impl::step_all_pairs(impl::World{w}).circles();
+  } catch (const impl::PositionOverflow&) {
+    return std::nullopt;
+  }
+}
+
 // A failure of one case: the step of the chain (1-based), its input, the two answers and what differs.
 struct Failure {
   std::uint64_t step;
@@ -100,12 +113,12 @@ class Checker {
     skipped = false;
     Circles now = w;
     for (std::uint64_t step = 1; step <= options_.steps; ++step) {
-      const Circles expected = spec::resolved_step_rounded(now);
-      for (const auto& c : expected)
-        if (!std::isfinite(c[0]) || !std::isfinite(c[1])) {
-          skipped = true;
-          return std::nullopt;
-        }
+      const std::optional<Circles> reference = expected_step(now);
+      if (!reference) {
+        skipped = true;
+        return std::nullopt;
+      }
+      const Circles& expected = *reference;
       const Circles actual = candidate_.answer(now, next_id_++);
       if (auto d = compare(now, expected, actual, options_.level)) return Failure{step, now, expected, actual, *d};
       now = actual;

@@ -125,6 +125,15 @@ TEST(conform, the_double_engine_conforms_over_chained_steps) {
   EXPECT_NE(report.find("2 steps each, level exact, seed 11"), std::string::npos) << report;
 }
 
+TEST(conform, its_fast_reference_agrees_with_the_oracle_on_the_worlds_it_draws) {
+  // conform compares answers with impl::step_all_pairs, not with the oracle itself (50-100 times slower): with
+  // the oracle as the candidate, every case must conform, over chained steps too.
+  EngineCandidate oracle(engine("oracle"), 1);
+  int status = -1;
+  const std::string report = run(oracle, ConformOptions{{0}, 3000, 21, 2, 0, 1, {}}, status);
+  EXPECT_EQ(status, 0) << report;
+}
+
 TEST(conform, rejects_a_strict_intersect_with_a_counterexample_shrunk_to_two_tangent_circles) {
   FunctionCandidate wrong(strict_intersect_step);
   int status = -1;
