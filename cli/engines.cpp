@@ -1,6 +1,7 @@
 #include "cli/engines.hpp"
 
 #include "impl/engine.hpp"
+#include "impl/exact_engine.hpp"
 #include "spec/oracle.hpp"
 
 #include <array>
@@ -23,10 +24,11 @@ void Stepper::step() {
 
 namespace {
 
-// impl::Engine: exact decisions, correctly rounded positions, a broad phase.
-class DoubleStepper final : public Stepper {
+// An engine of impl/ (impl::Engine or impl::ExactEngine): its step, with PositionOverflow as an Overflow.
+template <class E>
+class ImplStepper final : public Stepper {
  public:
-  DoubleStepper(const Circles& world, unsigned threads)
+  ImplStepper(const Circles& world, unsigned threads)
       : engine_(impl::World(world), impl::EngineOptions{.threads = threads}) {}
   Circles circles() const override { return engine_.world().circles(); }
 
@@ -39,7 +41,7 @@ class DoubleStepper final : public Stepper {
     }
     return std::nullopt;
   }
-  impl::Engine engine_;
+  E engine_;
 };
 
 // spec::resolved_step_rounded: the exact step in rationals, rounded. Slow, and the reference of every other.
@@ -60,6 +62,33 @@ class OracleStepper final : public Stepper {
   Circles world_;
 };
 
+// spec::resolved_step on the exact sequence from w_0, each world rounded: the reference of the exact engines.
+class ExactOracleStepper final : public Stepper {
+ public:
+  explicit ExactOracleStepper(const Circles& world) {
+    for (std::size_t k = 0; k < world.size(); ++k)
+      world_.push_back(spec::from_doubles(world[k], k, spec::Radii::non_negative));
+  }
+  Circles circles() const override {
+    Circles out;
+    for (const spec::Circle& c : world_) out.push_back(spec::nearest_doubles(c));
+    return out;
+  }
+
+ private:
+  std::optional<Overflow> advance() override {
+    spec::Sequence next = spec::resolved_step(world_);
+    for (std::size_t k = 0; k < next.size(); ++k)
+      for (const spec::Field f : {spec::Field::px, spec::Field::py}) {
+        const spec::Q& p = f == spec::Field::px ? next[k].p.x() : next[k].p.y();
+        if (!std::isfinite(spec::nearest_double(p))) return Overflow{k, f};
+      }
+    world_ = std::move(next);
+    return std::nullopt;
+  }
+  spec::Sequence world_;
+};
+
 template <class S>
 std::unique_ptr<Stepper> start(const Circles& world, unsigned threads) {
   return std::make_unique<S>(world, threads);
@@ -68,9 +97,13 @@ std::unique_ptr<Stepper> start(const Circles& world, unsigned threads) {
 constexpr std::array kEngines{
     EngineEntry{"double",
                 "the double engine of impl/: exact decisions, correctly rounded positions, a broad phase, threads",
-                true, &start<DoubleStepper>},
+                true, false, &start<ImplStepper<impl::Engine>>},
+    EngineEntry{"exact",
+                "the exact engine of impl/: the oracle's exact sequence in integers, each output rounded; a broad "
+                "phase, threads",
+                true, true, &start<ImplStepper<impl::ExactEngine>>},
     EngineEntry{"oracle", "the exact oracle of spec/, rounded to doubles: the reference, slow, one thread", false,
-                &start<OracleStepper>},
+                false, &start<OracleStepper>},
 };
 
 }  // namespace
@@ -98,6 +131,11 @@ const EngineEntry& engine(std::string_view name) {
   const EngineEntry* e = find_engine(name);
   if (!e) throw UnknownEngine(name);
   return *e;
+}
+
+std::unique_ptr<Stepper> reference(const EngineEntry& engine, const Circles& world) {
+  if (engine.exact) return std::make_unique<ExactOracleStepper>(world);
+  return cli::engine("oracle").start(world, 1);
 }
 
 Circles step_once(const EngineEntry& engine, const Circles& world, unsigned threads) {

@@ -1,8 +1,10 @@
 // The engine registry: the names `--engine` takes, each a way to step a world of doubles.
 //
 // Every engine computes the resolved step of the oracle (docs/math.md), each coordinate rounded to the nearest
-// double, and must equal spec::resolved_step_rounded by value. To add one (issue 4's "exact"), write a Stepper
-// for it in engines.cpp and add a row to the table there; every command and message picks it up.
+// double. A rounding engine steps from the last world in doubles and must equal spec::resolved_step_rounded by
+// value at every step; an exact engine (docs/exact-engine.md) keeps the exact sequence of the oracle from w_0
+// and rounds only what it shows, so its w_t is the oracle's exact w_t rounded. To add one, write a Stepper for
+// it in engines.cpp and add a row to the table there; every command and message picks it up.
 #pragma once
 
 #include "cli/protocol.hpp"
@@ -59,6 +61,7 @@ struct EngineEntry {
   std::string_view name;
   std::string_view summary;  // for --help
   bool threaded;             // whether `threads` below means anything to it
+  bool exact;                // keeps the exact sequence from w_0 (its reference is reference() below)
   // A stepper at w_0 = `world` (circles of C in the resolved profile) using up to `threads` threads (0: all
   // cores; engines without threads ignore it).
   std::unique_ptr<Stepper> (*start)(const Circles& world, unsigned threads);
@@ -70,18 +73,22 @@ std::span<const EngineEntry> engines();
 // The largest thread count an engine takes.
 unsigned max_threads();
 
-// "double, oracle"
+// "double, exact, oracle"
 std::string engine_names();
 
 // The engine of that name, or nullptr.
 const EngineEntry* find_engine(std::string_view name);
 
-// A name that is no engine: "unknown engine "x" (the engines are: double, oracle)".
+// A name that is no engine: "unknown engine "x" (the engines are: double, exact, oracle)".
 class UnknownEngine : public std::invalid_argument {
  public:
   explicit UnknownEngine(std::string_view name);
 };
 const EngineEntry& engine(std::string_view name);
+
+// The oracle that `engine` must equal at every step from w_0 = `world`: the correctly rounded oracle stepped
+// from the last world in doubles, or for an exact engine the oracle's exact sequence, each world rounded.
+std::unique_ptr<Stepper> reference(const EngineEntry& engine, const Circles& world);
 
 // w_1 from w_0 = `world` with `engine`: the step of one protocol request. Throws StepOverflow (step 1).
 Circles step_once(const EngineEntry& engine, const Circles& world, unsigned threads);

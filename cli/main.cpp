@@ -157,8 +157,8 @@ int main(int argc, char** argv) {
     report_oracle(scene, scene_name, steps, std::cout);
     if (*oracle) return 0;
     // The main job: every engine against the correctly rounded oracle, on the same scene and steps.
-    std::cout << "\nthe engines, each stepped beside the correctly rounded oracle (every step from the last world in "
-                 "doubles)\n";
+    std::cout << "\nthe engines, each stepped beside the oracle (a rounding engine against the correctly rounded step "
+                 "from its own last world; the exact engine against the oracle's exact sequence)\n";
     bool all_agree = true;
     for (const EngineEntry& e : engines()) {
       if (e.name == "oracle") continue;

@@ -125,7 +125,7 @@ void print_summary(const RunResult& result, std::size_t circles, const RunOption
 }
 
 Comparison compare_with_oracle(const EngineEntry& engine, const Circles& world, std::uint64_t steps, unsigned threads) {
-  const auto oracle = cli::engine("oracle").start(world, 1);
+  const auto oracle = reference(engine, world);
   const auto candidate = engine.start(world, threads);
   Comparison c;
   for (; c.steps < steps; ++c.steps) {
@@ -172,11 +172,12 @@ Comparison compare_with_oracle(const EngineEntry& engine, const Circles& world, 
 
 void print_comparison(const EngineEntry& engine, const Comparison& c, std::ostream& out) {
   out << engine.name << " engine: ";
+  const char* oracle = engine.exact ? "the oracle's exact sequence, rounded," : "the correctly rounded oracle";
   if (c.difference) {
-    out << "DIFFERS from the correctly rounded oracle at " << *c.difference << "\n";
+    out << "DIFFERS from " << oracle << " at " << *c.difference << "\n";
     return;
   }
-  out << "agrees with the correctly rounded oracle at each of the " << c.steps << " steps";
+  out << "agrees with " << oracle << " at each of the " << c.steps << " steps";
   if (c.overflow) out << ", after which both stop: " << c.overflow->what();
   out << "\n";
 }

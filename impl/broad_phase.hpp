@@ -233,6 +233,12 @@ void visit_neighbourhood(const CellGrid& grid, const CellView& view, std::size_t
   }
 }
 
+// A contact that one chunk of slots finds for a slot of a later chunk: slot `to` intersects slot `from`
+// (impl/contacts.hpp offers it after the parallel part).
+struct ContactOffer {
+  std::uint32_t to, from;
+};
+
 // ── For tests ─────────────────────────────────────────────────────────────────────────────────────────
 
 // A candidate pair, i < j (indices into the world).

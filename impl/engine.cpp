@@ -8,6 +8,8 @@
 // A step proven quiet (quiet_for) is advance alone, with every circle its own contact and no keys.
 #include "impl/engine.hpp"
 
+#include "impl/contacts.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -19,11 +21,6 @@
 namespace circles::impl {
 namespace {
 
-// Worlds below this size run on one thread: a parallel region costs more than it saves.
-constexpr std::size_t kParallelFrom = 8192;
-// Slots per chunk at least, and chunks per thread (more chunks than threads balance uneven cells).
-constexpr std::size_t kMinChunk = 2048;
-constexpr std::size_t kChunksPerThread = 4;
 // advance works in blocks that stay in L1 (5 arrays of 256 doubles = 10 KiB).
 constexpr std::size_t kBlock = 256;
 
@@ -41,30 +38,6 @@ constexpr std::uint64_t kMaxRetryGap = 1024;
 constexpr double kSpeedBound = 0.017;
 constexpr double kDriftBound = 0x1p-50;
 constexpr double kDriftAbsolute = 0x1p-1072;
-
-unsigned resolve_threads(unsigned requested, unsigned max) {
-  if (requested > max)
-    throw std::invalid_argument("EngineOptions::threads: " + std::to_string(requested) + " is more than " +
-                                std::to_string(max));
-  if (requested != 0) return requested;
-  const unsigned cores = std::thread::hardware_concurrency();
-  return std::clamp(cores, 1u, max);
-}
-
-// The chunks of n slots for `threads` threads: chunk c is [n·c/C, n·(c + 1)/C).
-std::size_t chunk_count(std::size_t n, unsigned threads) {
-  if (threads <= 1 || n < kParallelFrom) return 1;
-  return std::clamp<std::size_t>(n / kMinChunk, 1, std::size_t{threads} * kChunksPerThread);
-}
-std::size_t chunk_begin(std::size_t n, std::size_t chunks, std::size_t c) { return n * c / chunks; }
-
-// Runs f(c) for every chunk c of n slots, on up to `threads` threads.
-template <class F>
-void for_each_chunk(std::size_t chunks, unsigned threads, F&& f) {
-  const auto count = static_cast<long>(chunks);
-#pragma omp parallel for num_threads(threads) schedule(static) if (chunks > 1)
-  for (long c = 0; c < count; ++c) f(static_cast<std::size_t>(c));
-}
 
 template <class T>
 void gather(std::vector<T>& to, const std::vector<T>& from, std::span<const std::uint32_t> permutation,
@@ -198,59 +171,13 @@ void BasicEngine<A>::step() {
 
 template <class A>
 void BasicEngine<A>::find_contacts() {
-  const std::size_t n = now_.px.size();
-  least_.resize(n);
-  const std::size_t chunks = chunk_count(n, threads_);
-  offers_.resize(chunks);
-  std::vector<unsigned char> touched(chunks, 0);
   const CellView view{now_.key, now_.px, now_.py, now_.r, now_.levels, now_.level_begin};
-  for_each_chunk(chunks, threads_, [&](std::size_t c) {
-    const std::size_t begin = chunk_begin(n, chunks, c), end = chunk_begin(n, chunks, c + 1);
-    offers_[c].clear();
-    for (std::size_t t = begin; t < end; ++t) least_[t] = static_cast<std::uint32_t>(t);  // no contact yet
-    // A chunk writes the least contact of its own slots only; a contact found for a slot of a later chunk
-    // is recorded and offered after the parallel part.
-    const auto offer = [&](std::size_t to, std::size_t from) {
-      if (least_[to] == to || precedes(from, least_[to])) least_[to] = static_cast<std::uint32_t>(from);
-    };
-    NeighbourCursor cursor;
-    bool any = false;
-    for (std::size_t a = begin; a < end; ++a) {
-      const double ax = now_.px[a], ay = now_.py[a], ar = now_.r[a];
-      visit_neighbourhood(grid_, view, a, cursor, [&](std::size_t b) {
-        if (!A::intersect(ax, ay, ar, now_.px[b], now_.py[b], now_.r[b])) return;
-        any = true;
-        offer(a, b);
-        if (b < end)
-          offer(b, a);
-        else
-          offers_[c].push_back({static_cast<std::uint32_t>(b), static_cast<std::uint32_t>(a)});
-      });
-    }
-    touched[c] = any;
-  });
-  // The least contact is a minimum under a strict total order, so the order in which contacts are offered,
-  // and hence the thread count, cannot change it.
-  const auto offer = [this](std::size_t to, std::size_t from) {
-    if (least_[to] == to || precedes(from, least_[to])) least_[to] = static_cast<std::uint32_t>(from);
-  };
-  contacts_ = static_cast<std::size_t>(std::count(touched.begin(), touched.end(), 1));
-  for (const std::vector<Offer>& list : offers_) {
-    for (const Offer& o : list) offer(o.to, o.from);
-    contacts_ += list.size();
-  }
-  // Global circles (a box too wide for every level): tested against every circle, each pair once (a pair of
-  // two global circles from the earlier one).
-  const std::size_t global = now_.level_begin[CellGrid::kGlobalLevel];
-  for (std::size_t g = global; g < n; ++g)
-    for (std::size_t b = 0; b < n; ++b) {
-      if (b == g || (b >= global && b < g)) continue;
-      if (A::intersect(now_.px[g], now_.py[g], now_.r[g], now_.px[b], now_.py[b], now_.r[b])) {
-        offer(g, b);
-        offer(b, g);
-        ++contacts_;
-      }
-    }
+  contacts_ = find_least_contacts(
+      grid_, view, threads_, least_, offers_,
+      [this](std::size_t a, std::size_t b) {
+        return A::intersect(now_.px[a], now_.py[a], now_.r[a], now_.px[b], now_.py[b], now_.r[b]);
+      },
+      [this](std::size_t a, std::size_t b) { return precedes(a, b); });
 }
 
 template <class A>

@@ -112,9 +112,6 @@ class BasicEngine {
     std::vector<unsigned> levels;  // the levels that hold a circle, ascending, the global level excluded
     std::array<std::size_t, CellGrid::kLevels + 1> level_begin{};  // level L: [level_begin[L], level_begin[L + 1])
   };
-  struct Offer {  // circle `to` intersects circle `from`, found from `from`'s side
-    std::uint32_t to, from;
-  };
 
   bool precedes(std::size_t a, std::size_t b) const noexcept;
   void relayout();
@@ -137,7 +134,7 @@ class BasicEngine {
   std::vector<std::uint32_t> least_, permutation_, scratch_id_;
   std::vector<double> next_px_, next_py_, next_vx_, next_vy_, scratch_r_;
   std::vector<CellKey> next_key_;
-  std::vector<std::vector<Offer>> offers_;
+  std::vector<std::vector<ContactOffer>> offers_;
 };
 
 using Engine = BasicEngine<ExactArithmetic>;

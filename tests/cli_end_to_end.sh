@@ -29,15 +29,18 @@ expect_exit() {
 overflow_scene='{"circles": [[0, 0, 0, 0, 1], [1.7555597020139802e+308, -5, 8.426686569667106e+307, 0, 1]]}'
 
 case $case_name in
-serve_answers_a_trace_with_its_next_worlds_identically_with_both_engines)
+serve_answers_a_trace_with_its_next_worlds_identically_with_every_engine)
   # w_0 ... w_300 of the default scene as requests (a trace line with "id" for "step"): the responses are
-  # w_1 ... w_301, the same bytes from the double engine (2 threads) and the oracle, under the same ids.
+  # w_1 ... w_301, the same bytes from the double engine (2 threads), the exact engine (2 threads; one step
+  # from doubles, exact then rounded, is the correctly rounded step) and the oracle, under the same ids.
   "$circles" run --steps 300 --engine double --trace "$dir/trace.jsonl" >/dev/null
   sed 's/^{"step"/{"id"/' "$dir/trace.jsonl" >"$dir/requests.jsonl"
   "$circles" serve --engine oracle <"$dir/requests.jsonl" >"$dir/oracle.jsonl"
   "$circles" serve --engine double --threads 2 <"$dir/requests.jsonl" >"$dir/double.jsonl"
   [ "$(wc -l <"$dir/oracle.jsonl")" -eq 301 ] || fail "the oracle did not answer 301 requests"
   cmp "$dir/oracle.jsonl" "$dir/double.jsonl" || fail "the engines' responses differ"
+  "$circles" serve --engine exact --threads 2 <"$dir/requests.jsonl" >"$dir/exact.jsonl"
+  cmp "$dir/oracle.jsonl" "$dir/exact.jsonl" || fail "the exact engine's responses differ"
   cut -d, -f1 "$dir/requests.jsonl" >"$dir/request-ids"
   cut -d, -f1 "$dir/double.jsonl" >"$dir/response-ids"
   cmp "$dir/request-ids" "$dir/response-ids" || fail "a response has another id than its request"
@@ -73,6 +76,16 @@ run_writes_the_same_trace_with_the_double_engine_as_with_the_oracle)
     fail "wrong summary: $(cat "$dir/summary")"
   [ "$(ls "$dir" | wc -l)" -eq 3 ] || fail "files left behind: $(ls "$dir")"
   ;;
+run_with_the_exact_engine_writes_the_exact_sequence_rounded)
+  # Circle 9 of the default scene moves by (1, -7)/60 per step, alone: exactly (1102, 86) at step 120, which
+  # the double engine, rounding 120 times, misses in the last bits.
+  "$circles" run --steps 120 --engine exact --threads 1 --trace "$dir/exact.jsonl" >"$dir/summary"
+  [ "$(wc -l <"$dir/exact.jsonl")" -eq 121 ] || fail "the trace does not hold w_0 to w_120"
+  tail -n 1 "$dir/exact.jsonl" | grep -qF '[1102.0,86.0,1.0,-7.0,5.0]' || fail "circle 9 is not at (1102, 86): $(tail -n 1 "$dir/exact.jsonl")"
+  "$circles" run --steps 120 --engine double --threads 1 --trace "$dir/double.jsonl" >/dev/null
+  ! tail -n 1 "$dir/double.jsonl" | grep -qF '[1102.0,86.0,' || fail "the double engine no longer rounds circle 9 away"
+  grep -Eq 'with the exact engine \(1 thread\)' "$dir/summary" || fail "wrong summary: $(cat "$dir/summary")"
+  ;;
 run_exits_2_on_an_overflow_keeping_the_trace_before_it)
   printf '%s\n' "$overflow_scene" >"$dir/scene.json"
   expect_exit 2 sh -c '"$1" run "$2" --steps 10 --trace "$3" >/dev/null 2>"$4"' sh "$circles" "$dir/scene.json" "$dir/t.jsonl" "$dir/err"
@@ -92,7 +105,7 @@ run_exits_2_leaving_no_file_when_the_trace_cannot_be_written)
 run_and_serve_exit_2_listing_the_engines_for_an_unknown_one)
   for command in run serve; do
     expect_exit 2 sh -c '"$1" "$2" --engine fast </dev/null >/dev/null 2>"$3"' sh "$circles" "$command" "$dir/err"
-    grep -qF -- '--engine: unknown engine "fast" (the engines are: double, oracle)' "$dir/err" ||
+    grep -qF -- '--engine: unknown engine "fast" (the engines are: double, exact, oracle)' "$dir/err" ||
       fail "wrong message: $(cat "$dir/err")"
   done
   ;;

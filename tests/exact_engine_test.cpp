@@ -1,0 +1,348 @@
+// The exact engine (impl/exact_engine.hpp) against the oracle's exact sequence, as rationals, over whole
+// trajectories; its integer kernels (impl/exact_integer.hpp) against GMP; its width choice; its threads.
+//
+// Every trajectory is checked the same way (follow): the engine and spec::resolved_step run side by side, and
+// at every step the engine's exact state must equal the oracle's world and world() its nearest doubles; a
+// step whose rounded position is infinite must throw PositionOverflow naming that step and the first circle
+// and field, with the state unchanged.
+#include "impl/exact_engine.hpp"
+
+#include <gtest/gtest.h>
+#include <rapidcheck.h>
+#include <rapidcheck/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "cli/scene.hpp"
+#include "impl/engine.hpp"
+#include "impl/exact_integer.hpp"
+#include "impl/random_scene.hpp"
+#include "properties/generators.hpp"
+#include "spec/circle.hpp"
+#include "spec/oracle.hpp"
+#include "tests/thrown.hpp"
+
+namespace circles::impl {
+namespace {
+
+using Circles = std::vector<std::array<double, 5>>;
+using circles::testing::thrown;
+using exact::Narrow;
+using exact::NarrowMagnitude;
+using exact::Wide;
+namespace gen = properties::gen;
+using spec::Vec2;
+
+Circles nearest(const spec::Sequence& w) {
+  Circles out;
+  for (const spec::Circle& c : w) out.push_back(spec::nearest_doubles(c));
+  return out;
+}
+
+spec::Sequence exact_of(const Circles& w) {
+  spec::Sequence out;
+  for (std::size_t k = 0; k < w.size(); ++k) out.push_back(spec::from_doubles(w[k], k, spec::Radii::non_negative));
+  return out;
+}
+
+// The first circle and field (px before py) whose nearest double is infinite, if any.
+std::optional<std::pair<std::size_t, std::string>> first_overflow(const spec::Sequence& w) {
+  for (std::size_t k = 0; k < w.size(); ++k) {
+    if (std::isinf(spec::nearest_double(w[k].p.x()))) return std::pair{k, std::string("px")};
+    if (std::isinf(spec::nearest_double(w[k].p.y()))) return std::pair{k, std::string("py")};
+  }
+  return std::nullopt;
+}
+
+// Runs `engine` and the oracle from w side by side for `steps` steps (or to an overflow), with RC_ASSERT.
+void follow(ExactEngine& engine, spec::Sequence w, int steps) {
+  RC_ASSERT(engine.exact() == w);
+  for (int t = 1; t <= steps; ++t) {
+    const spec::Sequence next = spec::resolved_step(w);
+    if (const auto overflow = first_overflow(next)) {
+      try {
+        engine.step();
+        RC_FAIL("no PositionOverflow at step " + std::to_string(t));
+      } catch (const PositionOverflow& e) {
+        RC_ASSERT(e.step == static_cast<std::uint64_t>(t));
+        RC_ASSERT(e.index == overflow->first);
+        RC_ASSERT(std::string(e.field) == overflow->second);
+      }
+      RC_ASSERT(engine.exact() == w);
+      RC_ASSERT(engine.steps() == static_cast<std::uint64_t>(t - 1));
+      return;
+    }
+    engine.step();
+    w = next;
+    RC_ASSERT(engine.exact() == w);
+    RC_ASSERT(engine.world().circles() == nearest(w));
+  }
+}
+
+// ── Trajectories against the oracle ───────────────────────────────────────────────────────────────────
+
+RC_GTEST_PROP(exact_engine, follows_the_oracle_exactly_on_rational_worlds_for_up_to_100_steps, ()) {
+  const spec::Sequence w = *gen::world(spec::Radii::non_negative);
+  const int steps = *rc::gen::inRange(1, 101);
+  ExactEngine engine(w, EngineOptions{.threads = 1});
+  follow(engine, w, steps);
+}
+
+RC_GTEST_PROP(exact_engine, follows_the_oracle_exactly_on_worlds_of_any_finite_doubles_for_up_to_100_steps, ()) {
+  // Subnormals, DBL_MAX, every binade: wide states, overflows and the GMP rounding are all likely here.
+  const Circles w = *gen::double_world(6, gen::finite_double());
+  const int steps = *rc::gen::inRange(1, 101);
+  ExactEngine engine(World(w), EngineOptions{.threads = 1});
+  follow(engine, exact_of(w), steps);
+}
+
+// Circle a moves along (3, 4)·q per step (v = 60·q·(3, 4)) towards b, at rest, and touches it exactly after
+// `when` steps (offset 0), or misses by one part in 2^60 of a coordinate either way; q is dyadic (every move
+// exact in doubles) or k/60 (a move no double can hold). Other circles of the world look on.
+rc::Gen<spec::Sequence> tangency_after_some_steps() {
+  return rc::gen::exec([] {
+    const spec::Q q = *rc::gen::element(spec::Q(1), spec::Q(3, 8), spec::Q(1, 60), spec::Q(7, 60), spec::Q(5, 1024));
+    const int when = *rc::gen::inRange(1, 60);
+    const spec::Q ra(*rc::gen::inRange(1, 9), 2), rb(*rc::gen::inRange(0, 9), 2);
+    const spec::Q offset = spec::Q(*rc::gen::inRange(-1, 2)) / spec::Q(Wide(1) << 60);
+    const spec::Q reach = q * when + (ra + rb) / 5;  // |(3, 4)| = 5
+    const spec::Q ax(*rc::gen::inRange(-20, 20)), ay(*rc::gen::inRange(-20, 20));
+    spec::Sequence w = *gen::world(spec::Radii::non_negative, 3);
+    for (spec::Circle& c : w) c.p += Vec2(spec::Q(100), spec::Q(0));  // onlookers, apart
+    w.push_back(spec::circle(ax, ay, 60 * q * 3, 60 * q * 4, ra));
+    w.push_back(spec::circle(ax + 3 * reach + offset, ay + 4 * reach, 0, 0, rb));
+    return w;
+  });
+}
+
+RC_GTEST_PROP(exact_engine, follows_the_oracle_through_a_tangency_reached_after_some_steps, ()) {
+  const spec::Sequence w = *tangency_after_some_steps();
+  ExactEngine engine(w, EngineOptions{.threads = 1});
+  follow(engine, w, 70);
+}
+
+TEST(exact_engine, meets_exactly_at_the_designed_tangency_and_not_one_step_before) {
+  // a from (0, 0) at v = (3, 4) (moves of 1/20, 1/15: no double holds them), b at rest touching after 30 steps.
+  const spec::Q reach = spec::Q(30, 60) + spec::Q(2, 5);
+  const spec::Sequence w{spec::circle(0, 0, 3, 4, 1), spec::circle(3 * reach, 4 * reach, 0, 0, 1)};
+  ExactEngine engine(w, EngineOptions{.threads = 1});
+  for (int t = 0; t < 30; ++t) engine.step();
+  EXPECT_EQ(engine.exact()[0].v, Vec2(spec::Q(3), spec::Q(4)));  // not yet touching before step 30
+  engine.step();                                                // world 30 touches: velocities swap
+  EXPECT_EQ(engine.exact()[0].v, Vec2(spec::Q(0), spec::Q(0)));
+  EXPECT_EQ(engine.exact()[1].v, Vec2(spec::Q(3), spec::Q(4)));
+}
+
+TEST(exact_engine, follows_the_oracle_on_the_bundled_scene_and_runs_it_for_10000_steps) {
+  const spec::Sequence w0 = cli::default_scene();
+  ExactEngine engine(w0, EngineOptions{.threads = 1});
+  BasicEngine<ExactArithmetic> doubles(World(nearest(w0)), EngineOptions{.threads = 1});
+  spec::Sequence oracle = w0;
+  constexpr int kOracleSteps = 600;  // the cradle, the glancing pair and the incomparable triple all act by then
+  for (int t = 1; t <= kOracleSteps; ++t) {
+    oracle = spec::resolved_step(oracle);
+    engine.step();
+    ASSERT_EQ(engine.exact(), oracle) << "step " << t;
+  }
+  EXPECT_TRUE(engine.narrow());
+  for (int t = kOracleSteps + 1; t <= 10000; ++t) engine.step();
+  for (int t = 1; t <= 10000; ++t) doubles.step();
+  // The double engine rounds every step; the exact engine only its output. They must agree bit for bit on
+  // every circle whose every position so far is a double (its moves are exact, so no rounding ever happened);
+  // in the bundled scene that is all but circle 9, which moves by (1, −7)/60 and alone. Circle 9 keeps its
+  // velocity (it meets no one), so the double engine's error is at most half an ulp per step.
+  const Circles exact = engine.world().circles(), rounded = doubles.world().circles();
+  ASSERT_EQ(exact.size(), 10u);
+  for (std::size_t k = 0; k < 9; ++k) EXPECT_EQ(exact[k], rounded[k]) << "circle " << k;
+  EXPECT_EQ(engine.exact()[9].v, Vec2(spec::Q(1), spec::Q(-7)));
+  EXPECT_EQ(engine.exact()[9].p, Vec2(spec::Q(1100) + spec::Q(10000, 60), spec::Q(100) - spec::Q(70000, 60)));
+  for (std::size_t f = 0; f < 2; ++f) {
+    const double ulp = std::nextafter(std::fabs(exact[9][f]), 1e300) - std::fabs(exact[9][f]);
+    EXPECT_LE(std::fabs(exact[9][f] - rounded[9][f]), 10000 * ulp / 2) << "field " << f;
+  }
+}
+
+// ── Width ─────────────────────────────────────────────────────────────────────────────────────────────
+
+TEST(exact_engine, holds_a_small_scene_in_128_bits_over_the_denominator_60_times_2_to_the_k) {
+  // 0.375 = 3·2^-3 is the least exponent: K = 3, D = 60·8.
+  ExactEngine engine(World({{0.375, 1, 2, 0, 1}, {5, 0, -1, 0, 0.5}}), EngineOptions{.threads = 1});
+  EXPECT_TRUE(engine.narrow());
+  EXPECT_EQ(engine.denominator(), Wide(480));
+}
+
+TEST(exact_engine, holds_a_subnormal_scene_in_gmp_integers_and_still_follows_the_oracle) {
+  const Circles w{{0x1p-1074, 0, 0x1p-1070, 0, 0x1p-1073}, {0x1p-1072, 0, 0, 0, 0x1p-1073}};
+  ExactEngine engine(World(w), EngineOptions{.threads = 1});
+  EXPECT_FALSE(engine.narrow());
+  spec::Sequence oracle = exact_of(w);
+  for (int t = 0; t < 20; ++t) {
+    oracle = spec::resolved_step(oracle);
+    engine.step();
+  }
+  EXPECT_EQ(engine.exact(), oracle);
+  EXPECT_EQ(engine.world().circles(), nearest(oracle));
+}
+
+TEST(exact_engine, moves_to_gmp_integers_exactly_when_the_proven_headroom_runs_out) {
+  // D = 60, V = 2^119: X = 2^119·t stays within 2^125 for 64 steps and must not be held in 128 bits after.
+  const double v = 0x1p119;
+  ExactEngine engine(World({{0, 0, v, 0, 1}, {-1e3, 0, 0, 0, 1}}), EngineOptions{.threads = 1});
+  spec::Sequence oracle = engine.exact();
+  for (int t = 1; t <= 70; ++t) {
+    engine.step();
+    oracle = spec::resolved_step(oracle);
+    ASSERT_EQ(engine.exact(), oracle) << "step " << t;
+    ASSERT_EQ(engine.narrow(), t <= 64) << "step " << t;
+  }
+}
+
+TEST(exact_engine, reports_the_first_position_that_rounds_to_infinity_and_keeps_its_state) {
+  // DBL_MAX + 2^970 is the midpoint below 2^1024 and rounds (to even) to infinity; DBL_MAX + 2^969 does not.
+  constexpr double kMax = std::numeric_limits<double>::max();
+  const Circles w{{kMax, 0, 60 * 0x1p969, 0, 0}, {0, kMax, 0, 60 * 0x1p970, 0}, {kMax, kMax, 60 * 0x1p970, 0, 0}};
+  ExactEngine engine(World(w), EngineOptions{.threads = 1});
+  const auto e = thrown<PositionOverflow>([&] { engine.step(); });
+  ASSERT_TRUE(e);
+  EXPECT_EQ(e->step, 1u);
+  EXPECT_EQ(e->index, 1u);
+  EXPECT_STREQ(e->field, "py");
+  EXPECT_STREQ(e->what(), "step 1, circle 1, field py: the position p + v/60 overflows to infinity");
+  EXPECT_EQ(engine.steps(), 0u);
+  EXPECT_EQ(engine.exact(), exact_of(w));
+}
+
+TEST(exact_engine, writes_its_state_as_rationals_in_lowest_terms) {
+  ExactEngine engine(World({{0.5, 0, 1, -90, 0.25}}), EngineOptions{.threads = 1});
+  engine.step();
+  const std::array<std::string, 5> expected{"31/60", "-3/2", "1", "-90", "1/4"};
+  EXPECT_EQ(engine.rationals(), std::vector{expected});
+}
+
+TEST(exact_engine, rejects_a_rational_whose_nearest_double_is_infinite_naming_circle_and_field) {
+  const spec::Q huge(Wide(1) << 1024);
+  const auto e = thrown<spec::OutsideC>([&] { ExactEngine(spec::Sequence{spec::circle(0, 0, 0, 0, 1), spec::circle(0, 0, huge, 0, 1)}); });
+  ASSERT_TRUE(e);
+  EXPECT_STREQ(e->what(), ("circle 1, field vx: value " + spec::to_string(huge) +
+                           " is beyond the double range (not an element of C)").c_str());
+}
+
+// ── Threads and scale ─────────────────────────────────────────────────────────────────────────────────
+
+// A benchmark scene with positions on multiples of 1/64 and moves v/60 on multiples of 1/64 too
+// (v a multiple of 15/16): every move is exact in doubles, so the correctly rounded double engine never
+// rounds and must equal the exact engine bit for bit, on every step.
+Circles exact_move_scene(std::size_t n) {
+  Circles w = random_scene(n, 0.1, 7);
+  for (auto& c : w) {
+    c[0] = std::round(c[0] * 64) / 64;
+    c[1] = std::round(c[1] * 64) / 64;
+    c[2] = std::round(c[2] * 16 / 15) * 15 / 16;
+    c[3] = std::round(c[3] * 16 / 15) * 15 / 16;
+  }
+  return w;
+}
+
+TEST(exact_engine, equals_the_double_engine_where_every_move_is_exact_on_every_thread_count) {
+  const Circles w = exact_move_scene(12000);  // above kParallelFrom: several chunks on 2 and 4 threads
+  BasicEngine<ExactArithmetic> doubles(World(w), EngineOptions{.threads = 1});
+  std::vector<ExactEngine> engines;
+  for (const unsigned threads : {1u, 2u, 4u}) engines.emplace_back(World(w), EngineOptions{.threads = threads});
+  for (int t = 1; t <= 30; ++t) {
+    doubles.step();
+    for (ExactEngine& e : engines) e.step();
+    const Circles expected = doubles.world().circles();
+    for (ExactEngine& e : engines) ASSERT_EQ(e.world().circles(), expected) << "step " << t << ", " << e.threads() << " threads";
+  }
+  EXPECT_EQ(engines[0].exact(), engines[1].exact());
+  EXPECT_EQ(engines[0].exact(), engines[2].exact());
+}
+
+TEST(exact_engine, takes_one_correctly_rounded_step_like_the_all_pairs_reference_on_a_large_scene) {
+  const Circles w = random_scene(12000, 0.1, 11);  // arbitrary doubles: moves no double holds
+  ExactEngine engine(World(w), EngineOptions{.threads = 2});
+  engine.step();
+  EXPECT_EQ(engine.world().circles(), step_all_pairs(World(w)).circles());
+}
+
+// ── The integer kernels ───────────────────────────────────────────────────────────────────────────────
+
+Narrow narrow(std::uint64_t hi, std::uint64_t lo, int shift) {
+  return static_cast<Narrow>(((NarrowMagnitude{hi} << 64) | lo) >> shift);
+}
+Wide wide(Narrow x) {
+  const bool negative = x < 0;
+  const NarrowMagnitude m = negative ? NarrowMagnitude{0} - static_cast<NarrowMagnitude>(x) : static_cast<NarrowMagnitude>(x);
+  Wide w(static_cast<std::uint64_t>(m >> 64));
+  w <<= 64;
+  w += Wide(static_cast<std::uint64_t>(m));
+  return negative ? Wide(-w) : w;
+}
+
+RC_GTEST_PROP(exact_round_quotient, is_the_nearest_double_of_the_quotient_ties_included, ()) {
+  // d up to 2^127; n of any size below 2^127, or a tie: an odd q in [2^53, 2^54) times d (n/d = q lies
+  // halfway between the even integers that are its neighbouring doubles), or one off it.
+  const int dshift = *rc::gen::inRange(1, 128);
+  const auto d = std::max<NarrowMagnitude>(1, static_cast<NarrowMagnitude>(narrow(*rc::gen::arbitrary<std::uint64_t>(),
+                                                                                     *rc::gen::arbitrary<std::uint64_t>(), dshift)));
+  Narrow n = narrow(*rc::gen::arbitrary<std::uint64_t>(), *rc::gen::arbitrary<std::uint64_t>(), *rc::gen::inRange(1, 128));
+  if (*rc::gen::arbitrary<bool>() && d < (NarrowMagnitude{1} << 70)) {
+    const auto q = (*rc::gen::inRange<std::uint64_t>(std::uint64_t{1} << 52, std::uint64_t{1} << 53)) * 2 + 1;
+    n = static_cast<Narrow>(NarrowMagnitude{q} * d) + *rc::gen::inRange(-1, 2);
+  }
+  if (*rc::gen::arbitrary<bool>()) n = -n;
+  const double got = exact::round_quotient(n, d);
+  RC_ASSERT(got == spec::nearest_double(spec::Q(wide(n)) / spec::Q(wide(static_cast<Narrow>(d)))));
+  RC_ASSERT(got == exact::round_quotient(wide(n), wide(static_cast<Narrow>(d))));
+}
+
+TEST(exact_round_quotient, rounds_halfway_cases_to_even_and_zero_to_plus_zero) {
+  const Narrow two53 = Narrow{1} << 53;
+  EXPECT_EQ(exact::round_quotient(2 * two53 + 1, 2), 0x1p53);          // 2^53 + 1/2: down to 2^53
+  EXPECT_EQ(exact::round_quotient(2 * two53 + 3, 2), 0x1p53 + 2);      // 2^53 + 3/2: up to the even 2^53 + 2
+  EXPECT_EQ(exact::round_quotient(-(2 * two53 + 3), 2), -(0x1p53 + 2));
+  EXPECT_EQ(exact::round_quotient(1, 3), 1.0 / 3);
+  EXPECT_FALSE(std::signbit(exact::round_quotient(Narrow{0}, 7)));
+}
+
+RC_GTEST_PROP(exact_intersect_scaled, decides_as_gmp_on_random_and_tangent_arguments, ()) {
+  // Tangent families (3, 4, 5)·m·2^j up to 2^125, moved by −1, 0 or +1 in one argument, or random values.
+  Narrow s, dx, dy;
+  if (*rc::gen::arbitrary<bool>()) {
+    const int j = *rc::gen::inRange(0, 100);
+    const Narrow m = *rc::gen::inRange<std::int64_t>(1, std::int64_t{1} << 20);
+    s = 5 * m << j;
+    dx = 3 * m << j;
+    dy = 4 * m << j;
+    Narrow* moved = *rc::gen::element(&s, &dx, &dy);
+    *moved += *rc::gen::inRange(-1, 2);
+    if (*rc::gen::arbitrary<bool>()) dx = -dx;
+  } else {
+    const auto draw = [] { return narrow(*rc::gen::arbitrary<std::uint64_t>(), *rc::gen::arbitrary<std::uint64_t>(), *rc::gen::inRange(2, 128)); };
+    s = draw();
+    s = s < 0 ? -s : s;
+    dx = draw();
+    dy = draw();
+  }
+  const Wide ws = wide(s), wx = wide(dx), wy = wide(dy);
+  const bool expected = ws * ws >= wx * wx + wy * wy;
+  RC_ASSERT(exact::intersect_scaled(s, dx, dy) == expected);
+  RC_ASSERT(exact::intersect_scaled(ws, wx, wy) == expected);
+}
+
+TEST(exact_intersect_scaled, holds_at_tangency_and_fails_one_unit_past_it_at_2_to_the_120) {
+  const Narrow unit = Narrow{1} << 100, m = (Narrow{1} << 20) - 1;
+  EXPECT_TRUE(exact::intersect_scaled(5 * m * unit, 3 * m * unit, 4 * m * unit));
+  EXPECT_FALSE(exact::intersect_scaled(5 * m * unit - 1, 3 * m * unit, 4 * m * unit));
+  EXPECT_TRUE(exact::intersect_scaled(5 * m * unit, 3 * m * unit - 1, 4 * m * unit));
+}
+
+}  // namespace
+}  // namespace circles::impl
