@@ -60,7 +60,7 @@ class Reader {
   }
   bool key(std::string& k) {
     bool* seen = k == counter_ ? &seen_counter_ : k == "circles" ? &seen_circles_ : nullptr;
-    if (!seen) return fail("unexpected key \"" + k + "\" (a line has exactly the keys " + keys() + ")");
+    if (!seen) return fail("unexpected key \"" + printable(k) + "\" (a line has exactly the keys " + keys() + ")");
     if (*seen) return fail("duplicate key \"" + k + "\"");
     *seen = true;
     state_ = k == counter_ ? State::counter : State::circles;
@@ -170,7 +170,7 @@ class Reader {
   static std::string parser_reason(const std::string& what) {
     const std::size_t column = what.find("column ");
     const std::size_t colon = what.find(": ", column == std::string::npos ? 0 : column);
-    return colon == std::string::npos ? what : what.substr(colon + 2);
+    return printable(colon == std::string::npos ? what : what.substr(colon + 2));
   }
 
   std::string_view counter_;
@@ -185,9 +185,30 @@ class Reader {
 Line parse_line(std::string_view text, std::size_t line_number, std::string_view counter) {
   if (text.find_first_not_of(" \t\r\n") == std::string_view::npos)
     throw ProtocolError(line_number, "empty line, expected an object " + line_shape(counter));
+  // nlohmann's lexer reads a NUL byte as the end of the input, so "{...}\0anything" would pass as "{...}".
+  if (const std::size_t nul = text.find('\0'); nul != std::string_view::npos)
+    throw ProtocolError(line_number, "malformed JSON at column " + std::to_string(nul + 1) +
+                                         ": a NUL byte, which JSON text cannot contain");
   Reader reader(counter);
   if (!nlohmann::json::sax_parse(text, &reader)) throw ProtocolError(line_number, reader.error.value_or("unreadable"));
   return std::move(reader.line);
+}
+
+std::string printable(std::string_view bytes) {
+  static constexpr char kHex[] = "0123456789ABCDEF";
+  std::string out;
+  out.reserve(bytes.size());
+  for (const char c : bytes) {
+    const auto b = static_cast<unsigned char>(c);
+    if (b >= 0x20 && b < 0x7F) {  // printable ASCII: space to '~'
+      out += c;
+    } else {
+      out += "\\x";
+      out += kHex[b >> 4];
+      out += kHex[b & 0xF];
+    }
+  }
+  return out;
 }
 
 void append_line(std::string& out, std::string_view counter, std::uint64_t number, const Circles& circles) {

@@ -46,6 +46,11 @@ struct Line {
 // beyond [[...]], throws ProtocolError; the reader stops at the first fault, so no input is too deep for it.
 Line parse_line(std::string_view text, std::size_t line_number, std::string_view counter = kId);
 
+// Input bytes as they may appear in a message: printable ASCII as is, any other byte (a control character, a
+// byte of a UTF-8 sequence, valid or not) as \xHH. A message naming what it read is then one line of ASCII,
+// whatever the input held.
+std::string printable(std::string_view bytes);
+
 // Appends {"<counter>":N,"circles":[[px,py,vx,vy,r],...]} without a newline, each number in the shortest
 // form that reads back as the same double. Throws std::domain_error for a coordinate that is not finite.
 void append_line(std::string& out, std::string_view counter, std::uint64_t number, const Circles& circles);

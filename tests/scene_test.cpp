@@ -33,7 +33,7 @@ TEST(parse_scene, names_the_circle_and_field_of_a_wrong_value) {
   EXPECT_EQ(error_of(R"({"circles": [[0, 0, 0, 0, -1]]})"),
             "s.json: circle 0, field r: radius -1 is negative (r >= 0, the resolved profile) (not an element of C)");
   EXPECT_EQ(error_of(R"({"circles": [[0, 0, 1e999, 0, 1]]})"),
-            "s.json: unreadable JSON: [json.exception.out_of_range.406] number overflow parsing '1e999'");
+            "s.json: circle 0, field vx: 1e999 is beyond the double range");
   EXPECT_EQ(error_of(R"({"circles": [[0, 0, 0, 9007199254740993, 1]]})"),
             "s.json: circle 0, field vy: integer 9007199254740993 is not exactly a double");
 }
