@@ -1,30 +1,29 @@
 // JSON numbers as doubles: one rule for scenes, protocol lines and traces, in both directions.
 //
-// Reading: a number written with a fraction or an exponent means the double nearest to it, as in every JSON
-// reader; an integer (no fraction, no exponent) must be exactly a double, because a writer that meant "the
-// nearest double" would have written one of those. Writing: the shortest text that reads back as the same
-// double, always with a fraction or an exponent, so -0 keeps its sign ("-0.0") and every reader, strict or
-// not, takes it for a double.
+// Reading: every number token denotes its decimal value and means the double nearest to it, ties to even,
+// whatever its form: "0.1", "1e300", "-0.0", and integers too, "9007199254740993" (2^53 + 1, a tie, so 2^53)
+// as much as "4783255246441940000" (how JavaScript's JSON.stringify writes the double 4.78325524644194e18).
+// This is what JavaScript's JSON.parse and C's strtod do, so a number any of them writes reads back as the
+// double it wrote. A token is refused only when that double would be infinite (beyond the double range); the
+// integer "-0" is zero, which only its sign distinguishes from -0.0 anyway.
+//
+// nlohmann's reader gives an integer token that fits in 64 bits as an int64 or uint64 (from_integer turns it
+// into its nearest double), and any other token, an integer beyond 64 bits included, as the result of strtod
+// on the token's text, which glibc rounds correctly (the nearest double, ties to even, in every case): that
+// double is the token's value as it stands, with no further check.
+//
+// Writing: the shortest text that reads back as the same double, always with a fraction or an exponent, so
+// -0 keeps its sign ("-0.0") and every reader, strict or not, takes it for a double.
 #pragma once
 
 #include <cstdint>
-#include <optional>
 #include <string>
-#include <string_view>
 
 namespace circles::cli::json_number {
 
-// The double whose value is exactly n, if there is one (always for |n| <= 2^53).
-std::optional<double> from_integer(std::int64_t n);
-std::optional<double> from_integer(std::uint64_t n);
-
-// A number token that the JSON reader has already turned into `value`, the nearest double: `value`, unless
-// `token` is an integer (an integer too large for 64 bits reaches here) that `value` is not exactly.
-std::optional<double> from_float_token(double value, std::string_view token);
-
-// The reason to give when an integer token is not exactly a double: "integer 9007199254740993 is not
-// exactly a double".
-std::string not_exact(std::string_view token);
+// The double nearest to n, ties to even: n itself for |n| <= 2^53.
+double from_integer(std::int64_t n);
+double from_integer(std::uint64_t n);
 
 // Appends the shortest text that reads back as x, with ".0" added where it would read as an integer. Throws
 // std::domain_error for NaN and infinities, which JSON cannot write.

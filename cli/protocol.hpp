@@ -41,9 +41,10 @@ struct Line {
 
 // Reads one line (without its newline; surrounding JSON whitespace is allowed). Strict: an object with
 // exactly the keys `counter` and "circles", each once, in either order; the counter an integer in
-// [0, 2^64 - 1]; each circle an array of 5 numbers that are doubles (cli/json_number.hpp) and form a circle
-// of C in the resolved profile (finite, r >= 0). Anything else, including trailing text and any nesting
-// beyond [[...]], throws ProtocolError; the reader stops at the first fault, so no input is too deep for it.
+// [0, 2^64 - 1]; each circle an array of 5 numbers, each read as its nearest double (cli/json_number.hpp),
+// that form a circle of C in the resolved profile (finite, r >= 0). Anything else, including trailing text and
+// any nesting beyond [[...]], throws ProtocolError; the reader stops at the first fault, so no input is too
+// deep for it.
 Line parse_line(std::string_view text, std::size_t line_number, std::string_view counter = kId);
 
 // Input bytes as they may appear in a message: printable ASCII as is, any other byte (a control character, a

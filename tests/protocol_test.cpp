@@ -165,13 +165,16 @@ TEST(protocol, rejects_a_number_beyond_the_double_range_naming_its_circle_and_fi
             "line 4: circle 1, field vx: -1e309 is beyond the double range");
 }
 
-TEST(protocol, rejects_an_integer_that_is_not_exactly_a_double) {
-  EXPECT_EQ(refusal(R"({"id": 1, "circles": [[0, 9007199254740993, 0, 0, 1]]})"),
-            "line 4: circle 0, field py: integer 9007199254740993 is not exactly a double");
-  EXPECT_EQ(refusal(R"({"id": 1, "circles": [[0, 0, -9223372036854775807, 0, 1]]})"),
-            "line 4: circle 0, field vx: integer -9223372036854775807 is not exactly a double");
-  EXPECT_EQ(refusal(R"({"id": 1, "circles": [[0, 0, 0, 18446744073709551617, 1]]})"),
-            "line 4: circle 0, field vy: integer 18446744073709551617 is not exactly a double");
+// Any number token means the double nearest to it, ties to even (docs/protocol.md, Numbers), integers too:
+// 2^53 + 1 and 2^53 + 3 are ties, -(2^63 - 1) an int64, 2^64 + 1 and 2^64 + 2049 beyond 64 bits (the second
+// just above a tie, which a reader rounding twice misses), 4783255246441940000 how JavaScript writes a double.
+TEST(protocol, reads_every_number_token_as_the_double_nearest_to_it) {
+  const Line line = parse_line(R"({"id": 1, "circles": [[9007199254740993, 9007199254740995, -9223372036854775807,
+                                   18446744073709551617, 18446744073709553665], [4783255246441940000, 0, 0, 0, 1]]})",
+                               4);
+  ASSERT_EQ(line.circles.size(), 2u);
+  EXPECT_EQ(line.circles[0], (std::array<double, 5>{0x1p53, 0x1p53 + 4, -0x1p63, 0x1p64, 0x1p64 + 4096}));
+  EXPECT_EQ(line.circles[1][0], 4.78325524644194e18);
 }
 
 TEST(protocol, rejects_a_value_of_the_wrong_type) {
