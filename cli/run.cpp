@@ -1,16 +1,16 @@
 #include "cli/run.hpp"
 
 #include "cli/json_number.hpp"
+#include "cli/progress.hpp"
 #include "cli/protocol.hpp"
+#include "cli/render.hpp"
+#include "cli/video.hpp"
 
-#include <sys/stat.h>
-#include <unistd.h>
-
-#include <cerrno>
+#include <algorithm>
 #include <cstdio>
-#include <cstdlib>
-#include <cstring>
 #include <optional>
+#include <stdexcept>
+#include <thread>
 #include <utility>
 
 namespace circles::cli {
@@ -22,61 +22,11 @@ Circles doubles_of(const std::vector<spec::Circle>& scene) {
   return w;
 }
 
+Circles doubles_of(const Scene& scene) { return doubles_of(scene.circles); }
+
 namespace {
 
-std::string system_error(const std::string& what) { return what + ": " + std::strerror(errno); }
-
-// A trace being written: lines go to a temporary file beside `path` (the same directory, so that the final
-// rename is atomic), which commit() renames to `path`. Until then `path` is untouched; a trace dropped
-// without commit() is removed, so no reader ever sees a half-written trace.
-class TraceFile {
- public:
-  explicit TraceFile(std::string path) : path_(std::move(path)), temp_(path_ + ".partial-XXXXXX") {
-    const int fd = mkstemp(temp_.data());
-    if (fd < 0) throw TraceError(system_error("trace " + path_ + ": cannot create " + temp_));
-    // mkstemp makes the file private (0600); a trace is an ordinary output file, so give it the mode a
-    // plain fopen would: 0666 less the umask (which can only be read by setting it).
-    const mode_t mask = umask(0);
-    umask(mask);
-    file_ = fdopen(fd, "w");
-    if (!file_ || fchmod(fd, 0666 & ~mask) != 0) {
-      const std::string reason = system_error("trace " + path_ + ": cannot open " + temp_);
-      if (!file_) close(fd);
-      discard();
-      throw TraceError(reason);
-    }
-  }
-  TraceFile(const TraceFile&) = delete;
-  TraceFile& operator=(const TraceFile&) = delete;
-  ~TraceFile() { discard(); }
-
-  void write(std::uint64_t step, const Circles& world) {
-    line_.clear();
-    append_line(line_, kStep, step, world);
-    line_ += '\n';
-    if (std::fwrite(line_.data(), 1, line_.size(), file_) != line_.size())
-      throw TraceError(system_error("trace " + path_ + ": cannot write to " + temp_));
-  }
-
-  void commit() {
-    std::FILE* f = std::exchange(file_, nullptr);
-    if (std::fclose(f) != 0) throw TraceError(system_error("trace " + path_ + ": cannot write to " + temp_));
-    if (std::rename(temp_.c_str(), path_.c_str()) != 0)
-      throw TraceError(system_error("trace " + path_ + ": cannot rename " + temp_ + " to it"));
-    temp_.clear();
-  }
-
- private:
-  void discard() noexcept {
-    if (file_) std::fclose(std::exchange(file_, nullptr));
-    if (!temp_.empty()) std::remove(temp_.c_str());
-    temp_.clear();
-  }
-
-  std::string path_, temp_;
-  std::FILE* file_ = nullptr;
-  std::string line_;
-};
+using Clock = std::chrono::steady_clock;
 
 // The shortest decimal that reads back as x, and its hexadecimal form, for messages: "0.1 (0x1.999999999999ap-4)".
 std::string show(double x) {
@@ -90,38 +40,169 @@ std::string show(double x) {
 }  // namespace
 
 RunResult run(const Circles& world, const RunOptions& options) {
-  std::optional<TraceFile> trace;
-  if (!options.trace.empty()) trace.emplace(options.trace);
-  const auto stepper = options.engine->start(world, options.threads);
-  if (trace) trace->write(0, world);
+  if (options.every == 0) throw std::invalid_argument("RunOptions::every: a frame every 0 steps");
+  const auto started = Clock::now();
   RunResult result;
+  // The video first: its checks (the name, ffmpeg on PATH) create nothing, so a run refused for them leaves
+  // no file and no directory behind.
+  std::optional<Video> video;
+  if (!options.video.empty()) video.emplace(options.video);
+  std::optional<OutputFile> trace;
+  if (!options.trace.empty()) trace.emplace(options.trace, "trace " + options.trace);
+  std::optional<FrameDirectory> frames;
+  if (!options.render.empty()) frames.emplace(options.render);
+  const bool pictures = video || frames, fit = pictures && options.fit;
+  Progress progress(options.progress, options.steps, fit ? 2 : 1, started);
+
+  View view = View::pixels();
+  if (fit) {
+    const auto fit_start = Clock::now();
+    Box box;
+    box.add(world);
+    const auto stepper = options.engine->start(world, options.threads);
+    while (stepper->steps() < options.steps) {
+      try {
+        stepper->step();
+      } catch (const StepOverflow&) {
+        break;  // the run below stops at the same step and reports it
+      }
+      if (stepper->steps() % options.every == 0) box.add(stepper->circles());
+      progress.update(0, stepper->steps(), Clock::now());
+    }
+    view = View::fit(box);
+    result.fitting = Clock::now() - fit_start;
+  }
+
+  std::optional<Frame> frame;
+  if (pictures) frame.emplace();
+  std::string line;
+  const auto record = [&](std::uint64_t t, const Circles& w) {
+    auto begin = Clock::now();
+    if (trace) {
+      line.clear();
+      append_line(line, kStep, t, w);
+      line += '\n';
+      trace->write(line);
+      const auto end = Clock::now();
+      result.tracing += end - begin;
+      begin = end;
+    }
+    if (!pictures || t % options.every != 0) return;
+    frame->draw(w, view);
+    auto end = Clock::now();
+    result.drawing += end - begin;
+    if (frames) {
+      begin = end;
+      frames->write(*frame, t);
+      end = Clock::now();
+      result.png += end - begin;
+    }
+    if (video) {
+      begin = end;
+      video->add(*frame);
+      result.video += Clock::now() - begin;
+    }
+    ++result.frames;
+  };
+
+  const auto stepper = options.engine->start(world, options.threads);
+  record(0, world);
+  const unsigned pass = fit ? 1 : 0;
   while (result.steps < options.steps) {
-    const auto start = std::chrono::steady_clock::now();
+    const auto start = Clock::now();
     try {
       stepper->step();
     } catch (const StepOverflow& e) {
       result.overflow = e;
       break;
     }
-    result.stepping += std::chrono::steady_clock::now() - start;
+    const auto stepped = Clock::now();
+    result.stepping += stepped - start;
     result.steps = stepper->steps();
-    if (trace) trace->write(result.steps, stepper->circles());
+    if (trace || (pictures && result.steps % options.every == 0)) {
+      record(result.steps, stepper->circles());
+      progress.update(pass, result.steps, Clock::now());
+    } else {
+      progress.update(pass, result.steps, stepped);
+    }
   }
-  if (trace) trace->commit();
+  if (trace) {
+    const auto begin = Clock::now();
+    trace->commit();
+    result.tracing += Clock::now() - begin;
+  }
+  if (video) {
+    const auto begin = Clock::now();
+    video->commit();
+    result.video += Clock::now() - begin;
+  }
+  progress.finish();
+  result.total = Clock::now() - started;
   return result;
 }
 
+namespace {
+
+std::string threads_text(const RunOptions& options) {
+  if (!options.engine->threaded) return "1 thread";
+  if (options.threads == 1) return "1 thread";
+  if (options.threads == 0) return "all cores";
+  return std::to_string(options.threads) + " threads";
+}
+
+// The last multiple of `every` up to `steps`: the step of the last frame.
+std::uint64_t last_frame(std::uint64_t steps, std::uint64_t every) { return steps / every * every; }
+
+}  // namespace
+
 void print_summary(const RunResult& result, std::size_t circles, const RunOptions& options, std::ostream& out) {
   out << result.steps << " steps of " << circles << " circles with the " << options.engine->name << " engine ("
-      << (!options.engine->threaded || options.threads == 1 ? std::string("1 thread")
-          : options.threads == 0                            ? std::string("all cores")
-                                                            : std::to_string(options.threads) + " threads")
-      << "): " << result.stepping.count() << " s stepping";
+      << threads_text(options) << "): " << result.stepping.count() << " s stepping";
   const double circle_steps = static_cast<double>(result.steps) * static_cast<double>(circles);
   if (circle_steps > 0) out << ", " << result.stepping.count() * 1e9 / circle_steps << " ns per circle-step";
   out << "\n";
   if (!options.trace.empty())
     out << "trace: " << options.trace << " (w_0 to w_" << result.steps << ", " << result.steps + 1 << " lines)\n";
+  const std::uint64_t every = std::max<std::uint64_t>(options.every, 1);
+  if (!options.render.empty()) {
+    out << "frames: " << frame_path(options.render, 0) << " to "
+        << frame_path(options.render, last_frame(result.steps, every)) << " ("
+        << result.frames << ", every " << every << (every == 1 ? " step" : " steps") << ")\n";
+  }
+  if (!options.video.empty())
+    out << "video: " << options.video << " (" << result.frames << " frames at " << kVideoFrameRate << " frames/s, "
+        << static_cast<double>(result.frames) / kVideoFrameRate << " s)\n";
+}
+
+void print_stats(const RunResult& result, std::size_t circles, const RunOptions& options, std::ostream& out) {
+  out << "steps: " << result.steps << "\n";
+  out << "circles: " << circles << "\n";
+  out << "engine: " << options.engine->name << "\n";
+  out << "threads: ";
+  if (!options.engine->threaded)
+    out << "1 (the " << options.engine->name << " engine has none)\n";
+  else if (options.threads == 0)
+    out << std::clamp(std::thread::hardware_concurrency(), 1u, max_threads()) << " (all cores)\n";
+  else
+    out << options.threads << "\n";
+  out << "stepping: " << result.stepping.count() << " s\n";
+  const double circle_steps = static_cast<double>(result.steps) * static_cast<double>(circles);
+  if (circle_steps > 0) out << "ns per circle-step: " << result.stepping.count() * 1e9 / circle_steps << "\n";
+  const bool pictures = !options.render.empty() || !options.video.empty();
+  if (pictures && options.fit) out << "fit pass: " << result.fitting.count() << " s\n";
+  if (pictures) {
+    out << "frames: " << result.frames << "\n";
+    const auto per_frame = [&](const char* name, RunResult::Seconds t) {
+      out << name << ": " << t.count() << " s";
+      if (result.frames > 0) out << " (" << t.count() * 1e3 / static_cast<double>(result.frames) << " ms per frame)";
+      out << "\n";
+    };
+    per_frame("drawing", result.drawing);
+    if (!options.render.empty()) per_frame("png", result.png);
+    if (!options.video.empty()) per_frame("video", result.video);
+  }
+  if (!options.trace.empty()) out << "trace: " << result.tracing.count() << " s\n";
+  out << "total: " << result.total.count() << " s\n";
 }
 
 Comparison compare_with_oracle(const EngineEntry& engine, const Circles& world, std::uint64_t steps, unsigned threads) {

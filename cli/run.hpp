@@ -1,15 +1,16 @@
-// `circles run` and the main job's check: an engine stepping a world many times, with a trace if asked, and
-// an engine stepped side by side with the oracle.
+// `circles run` and the main job's check: an engine stepping a world many times, with a trace, PNG frames and a
+// video if asked (docs/run.md), and an engine stepped side by side with the oracle.
 #pragma once
 
 #include "cli/engines.hpp"
+#include "cli/output_file.hpp"
+#include "cli/scene.hpp"
 #include "spec/circle.hpp"
 
 #include <chrono>
 #include <cstdint>
 #include <optional>
 #include <ostream>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -18,34 +19,64 @@ namespace circles::cli {
 // The doubles of a scene: every coordinate of a loaded scene is the exact value of a double (cli/scene.hpp),
 // so this gives those doubles back (a -0 as +0: a rational has no sign, and no step can tell them apart).
 Circles doubles_of(const std::vector<spec::Circle>& scene);
+Circles doubles_of(const Scene& scene);
 
-// A trace that cannot be written: what() names the file and the system's reason.
-class TraceError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
+// A trace that cannot be written: what() names the file and the system's reason (cli/output_file.hpp).
+using TraceError = OutputError;
 
 struct RunOptions {
   std::uint64_t steps = 0;
   const EngineEntry* engine = nullptr;
-  unsigned threads = 0;   // 0: all cores
-  std::string trace;      // the trace file, or empty for none
+  unsigned threads = 0;     // 0: all cores
+  std::string trace{};      // the trace file, or empty for none
+  std::string render{};     // --render DIR: the directory of the PNG frames, or empty for none
+  std::uint64_t every = 1;  // --every K: a frame of w_t for each t that is a multiple of K (K >= 1)
+  std::string video{};      // --video FILE.mp4, or empty for none
+  bool fit = false;         // --fit: View::fit of every frame's circles instead of world units = pixels
+  std::ostream* progress = nullptr;  // the progress bar's terminal (cli/progress.hpp), or nullptr: quiet
 };
 
 struct RunResult {
-  std::uint64_t steps = 0;                 // steps taken: the last world is w_steps
-  std::optional<StepOverflow> overflow;    // what stopped the run early, if anything
-  std::chrono::duration<double> stepping{};  // wall time of the steps alone (not the trace)
+  using Seconds = std::chrono::duration<double>;
+  std::uint64_t steps = 0;               // steps taken: the last world is w_steps
+  std::optional<StepOverflow> overflow;  // what stopped the run early, if anything
+  Seconds stepping{};                    // wall time of the steps alone (not the trace, not the pictures)
+  std::uint64_t frames = 0;              // pictures made: w_0, w_K, w_2K, ... up to w_steps
+  Seconds fitting{};                     // --fit's first pass (stepping without pictures, for the view)
+  Seconds drawing{}, png{}, video{};     // Cairo drawing the frames; encoding and writing PNGs; piping to
+                                         // ffmpeg (and waiting for it at the end)
+  Seconds tracing{};                     // formatting and writing the trace
+  Seconds total{};                       // the whole of run(), from its first output file to its last
 };
 
-// Steps w_0 = `world` with options.engine up to options.steps times, stopping at the first overflow. With a
-// trace, writes one line {"step": t, "circles": [...]} per world w_0, w_1, ..., w_steps to a temporary file
-// beside options.trace and renames it into place at the end, after an overflow too (so the trace holds every
-// world before it). Throws TraceError, leaving no file behind, when the trace cannot be written.
+// Steps w_0 = `world` with options.engine up to options.steps times, stopping at the first overflow.
+//
+// With a trace, writes one line {"step": t, "circles": [...]} per world w_0, w_1, ..., w_steps to a temporary
+// file beside options.trace and renames it into place at the end, after an overflow too (so the trace holds
+// every world before it). With --render DIR and/or --video FILE, draws w_t for each t that is a multiple of
+// options.every (w_0 first; the last world is drawn only when its step is such a multiple) and writes it as
+// DIR/frame_name(t) and as the next frame of the video; after an overflow the video is kept too, with the
+// frames before it. With --fit, a first pass steps the same engine from w_0 without drawing to find the box
+// of every frame's circles (the engines are deterministic, so the second pass meets the same worlds).
+//
+// Every output is checked before the first step: the name of the video and ffmpeg (VideoError), the trace's
+// and the video's temporary files and the frames' directory (OutputError). A failure leaves no trace and no
+// video file behind; frames already written stay, each a complete PNG.
 RunResult run(const Circles& world, const RunOptions& options);
 
-// "100 steps of 10 circles with the double engine (all cores): 0.000135 s stepping, 135 ns per circle-step".
+// "100 steps of 10 circles with the double engine (all cores): 0.000135 s stepping, 135 ns per circle-step",
+// then a line for each output: "trace: t.jsonl (w_0 to w_100, 101 lines)", "frames: f/frame-000000.png to
+// f/frame-000099.png (34, every 3 steps)", "video: v.mp4 (34 frames at 60 frames/s, 0.566667 s)".
 void print_summary(const RunResult& result, std::size_t circles, const RunOptions& options, std::ostream& out);
+
+// --stats: one "name: value" line for each figure of the run, those that do not apply left out:
+//   steps: 1000                    stepping: 0.00123 s            drawing: 1.2 s (3.6 ms per frame)
+//   circles: 10                    ns per circle-step: 123        png: 2.1 s (6.3 ms per frame)
+//   engine: double                 fit pass: 0.0011 s             video: 0.9 s (2.7 ms per frame)
+//   threads: 2 (all cores)         frames: 334                    trace: 0.01 s
+//                                                                 total: 4.3 s
+// in that order, one a line (down the first column, then the second, then the third).
+void print_stats(const RunResult& result, std::size_t circles, const RunOptions& options, std::ostream& out);
 
 // `engine` and the oracle stepped side by side from w_0 = `world` for `steps` steps, compared by value after
 // each step (-0 == +0).

@@ -1,6 +1,7 @@
 // The engine registry, `circles serve`'s line handling and `circles run`'s trace (cli/engines.hpp,
 // cli/serve.hpp, cli/run.hpp), each held to spec::resolved_step_rounded, the correctly rounded oracle step.
 #include "cli/engines.hpp"
+#include "cli/progress.hpp"
 #include "cli/protocol.hpp"
 #include "cli/run.hpp"
 #include "cli/scene.hpp"
@@ -16,12 +17,14 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace circles::cli {
@@ -277,6 +280,139 @@ TEST(run, summarizes_steps_circles_engine_threads_and_time) {
             "4 steps of 5 circles with the double engine (3 threads): 2e-06 s stepping, 100 ns per circle-step\n");
   EXPECT_EQ(summary("oracle", 0, ""),
             "4 steps of 5 circles with the oracle engine (1 thread): 2e-06 s stepping, 100 ns per circle-step\n");
+}
+
+// --every 3 over 10 steps: frames of w_0, w_3, w_6, w_9, the last at step 9; 4 frames at 60 a second last 1/15 s.
+TEST(run, summarizes_the_frames_and_the_video) {
+  RunResult result;
+  result.steps = 10;
+  result.frames = 4;
+  RunOptions options{10, &engine("double"), 1, ""};
+  options.render = "out";
+  options.every = 3;
+  options.video = "v.mp4";
+  std::ostringstream out;
+  print_summary(result, 5, options, out);
+  EXPECT_EQ(out.str(),
+            "10 steps of 5 circles with the double engine (1 thread): 0 s stepping, 0 ns per circle-step\n"
+            "frames: out/frame-000000.png to out/frame-000009.png (4, every 3 steps)\n"
+            "video: v.mp4 (4 frames at 60 frames/s, 0.0666667 s)\n");
+}
+
+// 2e-6 s over 4 steps of 5 circles is 100 ns per circle-step; 3 frames in 0.006 s of drawing are 2 ms each.
+TEST(run, prints_stats_one_figure_a_line_leaving_out_what_does_not_apply) {
+  RunResult result;
+  result.steps = 4;
+  result.frames = 3;
+  result.stepping = std::chrono::duration<double>(2e-6);
+  result.fitting = std::chrono::duration<double>(1e-6);
+  result.drawing = std::chrono::duration<double>(0.006);
+  result.png = std::chrono::duration<double>(0.012);
+  result.video = std::chrono::duration<double>(0.003);
+  result.tracing = std::chrono::duration<double>(0.5);
+  result.total = std::chrono::duration<double>(2);
+  const auto stats = [&](const RunOptions& options) {
+    std::ostringstream out;
+    print_stats(result, 5, options, out);
+    return out.str();
+  };
+  RunOptions options{4, &engine("double"), 3, ""};
+  EXPECT_EQ(stats(options),
+            "steps: 4\ncircles: 5\nengine: double\nthreads: 3\nstepping: 2e-06 s\nns per circle-step: 100\n"
+            "total: 2 s\n");
+  options.engine = &engine("oracle");
+  options.trace = "t.jsonl";
+  options.render = "frames";
+  options.video = "v.mp4";
+  options.fit = true;
+  EXPECT_EQ(stats(options),
+            "steps: 4\ncircles: 5\nengine: oracle\nthreads: 1 (the oracle engine has none)\nstepping: 2e-06 s\n"
+            "ns per circle-step: 100\nfit pass: 1e-06 s\nframes: 3\ndrawing: 0.006 s (2 ms per frame)\n"
+            "png: 0.012 s (4 ms per frame)\nvideo: 0.003 s (1 ms per frame)\ntrace: 0.5 s\ntotal: 2 s\n");
+  options.engine = &engine("double");
+  options.threads = 0;
+  EXPECT_TRUE(stats(options).find("\nthreads: " + std::to_string(std::clamp(std::thread::hardware_concurrency(), 1u,
+                                                                             max_threads())) +
+                                  " (all cores)\n") != std::string::npos);
+  result.steps = 0;
+  EXPECT_EQ(stats(RunOptions{0, &engine("exact"), 2, ""}),
+            "steps: 0\ncircles: 5\nengine: exact\nthreads: 2\nstepping: 2e-06 s\ntotal: 2 s\n");
+}
+
+TEST(run, refuses_a_frame_every_0_steps) {
+  RunOptions options{3, &engine("double"), 1, ""};
+  options.every = 0;
+  EXPECT_THROW(run(kTouching, options), std::invalid_argument);
+}
+
+// The progress bar, driven by given times: t(s) is s seconds after the start.
+Progress::Clock::time_point t(double seconds) {
+  return Progress::Clock::time_point{} +
+         std::chrono::duration_cast<Progress::Clock::duration>(std::chrono::duration<double>(seconds));
+}
+
+TEST(progress, stays_quiet_for_a_run_that_ends_within_half_a_second_and_is_not_estimated_at_a_second) {
+  std::ostringstream out;
+  {
+    Progress p(&out, 1000, 1, t(0));
+    p.update(0, 10, t(0.01));
+    p.update(0, 500, t(0.25));  // estimate 0.5 s
+    p.update(0, 990, t(0.49));
+    EXPECT_FALSE(p.shown());
+  }
+  EXPECT_EQ(out.str(), "");
+}
+
+TEST(progress, appears_after_half_a_second_whatever_the_estimate) {
+  std::ostringstream out;
+  Progress p(&out, 1000, 1, t(0));
+  p.update(0, 990, t(0.51));
+  EXPECT_TRUE(p.shown());
+  EXPECT_EQ(out.str(), "\r[###################.]  99%  step 990 of 1000  0.0 s left");
+}
+
+// 100 of 1000 steps in 0.25 s: 2.25 s to go at that rate, so the bar comes at once.
+TEST(progress, appears_from_a_fifth_of_a_second_on_when_the_run_is_estimated_at_a_second_or_more) {
+  std::ostringstream out;
+  Progress p(&out, 1000, 1, t(0));
+  p.update(0, 1, t(0.19));
+  EXPECT_FALSE(p.shown());
+  p.update(0, 100, t(0.25));
+  EXPECT_TRUE(p.shown());
+  EXPECT_EQ(out.str(), "\r[##..................]  10%  step 100 of 1000  2.2 s left");
+}
+
+// With --fit: the first pass ends at its last update (0.65 s); the second's first 10 steps take 0.06 s, so its
+// 990 others are estimated at 5.94 s.
+TEST(progress, redraws_at_most_every_tenth_of_a_second_each_pass_with_its_own_bar_and_erases_its_line_at_the_end) {
+  std::ostringstream out;
+  Progress p(&out, 1000, 2, t(0));
+  p.update(0, 100, t(0.6));
+  const std::string first = out.str();
+  EXPECT_EQ(first, "\r[##..................]  10%  step 100 of 1000 (fit pass)  5.4 s left");
+  p.update(0, 200, t(0.65));
+  EXPECT_EQ(out.str(), first) << "redrawn within 0.1 s";
+  p.update(1, 10, t(0.71));
+  const std::string second = "[....................]   1%  step 10 of 1000 (run)  5.9 s left";
+  EXPECT_EQ(out.str(), first + "\r" + second + std::string(first.size() - 1 - second.size(), ' '));
+  p.finish();
+  EXPECT_FALSE(p.shown());
+  const std::string blank = "\r" + std::string(first.size() - 1, ' ') + "\r";
+  EXPECT_TRUE(out.str().ends_with(blank)) << out.str();
+}
+
+TEST(progress, is_silent_without_a_terminal) {
+  Progress p(nullptr, 1000, 1, t(0));
+  p.update(0, 1, t(5));
+  EXPECT_FALSE(p.shown());
+}
+
+TEST(progress, draws_a_bar_of_twenty_with_the_percentage_step_pass_and_time_left) {
+  EXPECT_EQ(progress_line(0, 1, 500, 1000, 1.5), "[##########..........]  50%  step 500 of 1000  1.5 s left");
+  EXPECT_EQ(progress_line(0, 2, 500, 1000, 1.5),
+            "[##########..........]  50%  step 500 of 1000 (fit pass)  1.5 s left");
+  EXPECT_EQ(progress_line(1, 2, 1000, 1000, 0), "[####################] 100%  step 1000 of 1000 (run)  0.0 s left");
+  EXPECT_EQ(progress_line(0, 1, 0, 7, INFINITY), "[....................]   0%  step 0 of 7");
 }
 
 TEST(compare_with_oracle, finds_the_double_engine_in_agreement_on_the_default_scene) {
