@@ -1,0 +1,367 @@
+// `circles check-trace` (cli/check_trace.hpp) and its reader (cli/trace_reader.hpp): traces written by
+// `circles run` agree, a trace changed in one field by one ulp is caught at that step, circle and field, and
+// every trace that is not one is refused with its file, line and reason (exit 2), never a crash.
+#include "cli/check_trace.hpp"
+#include "cli/engines.hpp"
+#include "cli/run.hpp"
+#include "cli/scene.hpp"
+#include "cli/trace_reader.hpp"
+#include "impl/state_hash.hpp"
+#include "tests/thrown.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace circles::cli {
+namespace {
+
+namespace fs = std::filesystem;
+using circles::testing::thrown;
+
+// A fresh directory for one test's files, removed at the end.
+struct TempDir {
+  fs::path path;
+  TempDir() {
+    std::string name = (fs::temp_directory_path() / "circles-check-trace-test-XXXXXX").string();
+    path = mkdtemp(name.data()) ? name : throw std::runtime_error("mkdtemp failed");
+  }
+  ~TempDir() { fs::remove_all(path); }
+  std::string write(const std::string& name, const std::string& bytes) const {
+    std::ofstream(path / name, std::ios::binary) << bytes;
+    return (path / name).string();
+  }
+};
+
+std::vector<std::string> lines_of(const std::string& file) {
+  std::ifstream in(file);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+std::string joined(const std::vector<std::string>& lines) {
+  std::string text;
+  for (const std::string& l : lines) text += l + "\n";
+  return text;
+}
+
+// A trace of `steps` steps of `world` with the named engine, as `circles run --trace` writes it.
+std::string record(const TempDir& dir, const std::string& name, const Circles& world, std::uint64_t steps,
+                   const char* engine_name = "double") {
+  const std::string path = (dir.path / name).string();
+  RunOptions options;
+  options.steps = steps;
+  options.engine = &engine(engine_name);
+  options.threads = 1;
+  options.trace = path;
+  run(world, options);
+  return path;
+}
+
+struct Outcome {
+  int code;
+  std::string out, err;
+};
+Outcome command(const std::string& path, TraceReference reference = TraceReference::rounded) {
+  std::ostringstream out, err;
+  const int code = check_trace_command(path, reference, out, err);
+  return {code, out.str(), err.str()};
+}
+
+// The reader's message for `text` read as the trace "t.jsonl".
+std::string read_error(const std::string& text) {
+  std::istringstream in(text);
+  TraceReader reader(in, "t.jsonl");
+  const auto e = thrown<TraceReadError>([&] {
+    while (reader.next()) {
+    }
+  });
+  return e ? e->what() : "";
+}
+
+// "0.1 (0x1.999999999999ap-4)", written here with printf rather than by the code under test.
+std::string shown(double x, const char* decimal) {
+  char hex[40];
+  std::snprintf(hex, sizeof hex, "%a", x);
+  return std::string(decimal) + " (" + hex + ")";
+}
+
+// One circle at rest at the origin moving by 1 per second: stepped in doubles, p = RN(p + 1/60) each step; in
+// the exact sequence p = t/60, rounded. They part at step 6: RN(RN(5/60) + 1/60) = 0.09999999999999999, one
+// ulp below RN(6/60) = 0.1 (computed apart with Python's fractions).
+const Circles kDrifter{{0, 0, 1, 0, 1}};
+
+TEST(check_trace, a_trace_of_the_double_engine_agrees_with_the_correctly_rounded_step_at_each_step) {
+  TempDir dir;
+  const std::string path = record(dir, "t.jsonl", doubles_of(default_scene()), 200);
+  TraceReader reader(path);
+  const TraceCheck check = check_trace(reader, TraceReference::rounded);
+  EXPECT_FALSE(check.divergence);
+  EXPECT_EQ(check.first_step, 0u);
+  EXPECT_EQ(check.last_step, 200u);
+  EXPECT_EQ(check.circles, 10u);
+  // The hashes are those of the worlds in the file, read apart from the checker.
+  const std::vector<std::string> lines = lines_of(path);
+  ASSERT_EQ(lines.size(), 201u);
+  impl::StateHash trajectory;
+  Circles last;
+  for (std::size_t t = 0; t < lines.size(); ++t) {
+    last = parse_line(lines[t], t + 1, kStep).circles;
+    trajectory.add(last);
+  }
+  EXPECT_EQ(check.last_hash, impl::state_hash(last));
+  EXPECT_EQ(check.trajectory_hash, trajectory.value());
+  const Outcome o = command(path);
+  EXPECT_EQ(o.code, 0);
+  char hashes[80];
+  std::snprintf(hashes, sizeof hashes, "state hash of step 200: %016llx, trajectory hash: %016llx",
+                static_cast<unsigned long long>(impl::state_hash(last)),
+                static_cast<unsigned long long>(trajectory.value()));
+  EXPECT_EQ(o.out, "circles check-trace: " + path +
+                       ": agrees with the correctly rounded step at each of its 200 steps (steps 0 to 200, 10 "
+                       "circles); " + hashes + "\n");
+  EXPECT_EQ(o.err, "");
+}
+
+TEST(check_trace, a_trace_of_the_exact_engine_agrees_with_the_exact_sequence) {
+  TempDir dir;
+  const std::string path = record(dir, "t.jsonl", doubles_of(default_scene()), 100, "exact");
+  const Outcome o = command(path, TraceReference::exact);
+  EXPECT_EQ(o.code, 0) << o.out << o.err;
+  EXPECT_TRUE(o.out.starts_with("circles check-trace: " + path +
+                                ": agrees with the oracle's exact sequence, rounded, at each of its 100 steps"))
+      << o.out;
+}
+
+// "0123456789abcdef": a hash as the checker prints it, written here with printf.
+std::string hex(std::uint64_t h) {
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(h));
+  return text;
+}
+
+// The trajectory hash of the first `count` lines of a trace, read apart from the checker.
+std::uint64_t trajectory_of(const std::vector<std::string>& lines, std::size_t count) {
+  impl::StateHash h;
+  for (std::size_t t = 0; t < count; ++t) h.add(parse_line(lines[t], t + 1, kStep).circles);
+  return h.value();
+}
+
+TEST(check_trace, a_position_changed_by_one_ulp_is_named_by_its_step_circle_and_field) {
+  TempDir dir;
+  std::vector<std::string> lines = lines_of(record(dir, "t.jsonl", doubles_of(default_scene()), 50));
+  // Circle 3 of the default scene rests at (280, 360) for the first steps; one ulp of 280 is 2^-44.
+  Line w20 = parse_line(lines[20], 21, kStep);
+  ASSERT_EQ(w20.circles[3][0], 280.0);
+  const double up = std::nextafter(280.0, 1000.0);
+  ASSERT_EQ(up - 280.0, std::ldexp(1.0, -44));
+  w20.circles[3][0] = up;
+  lines[20] = format_line(kStep, 20, w20.circles);
+  const std::string path = dir.write("tampered.jsonl", joined(lines));
+  const Outcome o = command(path);
+  EXPECT_EQ(o.code, 1);
+  EXPECT_EQ(o.out, "circles check-trace: " + path + ":21: step 20 differs from the correctly rounded step of line 20: "
+                       "circle 3, field px: expected " + shown(280.0, "280.0") + ", actual " +
+                       shown(up, "280.00000000000006") +
+                       "\n  which decision: none: the velocity is right, the position is not the nearest double\n"
+                       "  the worlds before it agree (steps 0 to 19, 10 circles; trajectory hash " +
+                       hex(trajectory_of(lines, 20)) + ")\n");
+  EXPECT_EQ(o.err, "");
+  TraceReader reader(path);
+  const TraceCheck check = check_trace(reader, TraceReference::rounded);
+  ASSERT_TRUE(check.divergence);
+  EXPECT_EQ(check.divergence->line, 21u);
+  EXPECT_EQ(check.divergence->step, 20u);
+  ASSERT_TRUE(check.divergence->difference);
+  EXPECT_EQ(check.divergence->difference->circle, 3u);
+  EXPECT_EQ(check.divergence->difference->field, 0);
+  EXPECT_EQ(check.last_step, 19u);
+}
+
+TEST(check_trace, a_velocity_kept_through_a_contact_is_named_as_the_decision_of_intersect) {
+  // The two circles touch; in the second world circle 0 kept its own velocity instead of taking -60.
+  TempDir dir;
+  const std::string path = dir.write("t.jsonl",
+                                     "{\"step\": 4, \"circles\": [[0, 0, 60, 0, 1], [2, 0, -60, 0, 1]]}\n"
+                                     "{\"step\": 5, \"circles\": [[1, 0, 60, 0, 1], [3, 0, 60, 0, 1]]}\n");
+  const Outcome o = command(path);
+  EXPECT_EQ(o.code, 1);
+  EXPECT_EQ(o.out, "circles check-trace: " + path + ":2: step 5 differs from the correctly rounded step of line 1: "
+                       "circle 0, field px: expected " + shown(-1.0, "-1.0") + ", actual " + shown(1.0, "1.0") +
+                       "\n  which decision: intersect (3): circle 0 touches circle 1 but kept its own velocity\n"
+                       "  the worlds before it agree (steps 4 to 4, 2 circles; trajectory hash " +
+                       hex(impl::state_hash(Circles{{0, 0, 60, 0, 1}, {2, 0, -60, 0, 1}})) + ")\n");
+}
+
+TEST(check_trace, the_double_and_the_exact_readings_part_where_rounding_each_step_drifts) {
+  TempDir dir;
+  const std::string doubles = record(dir, "double.jsonl", kDrifter, 10, "double");
+  const std::string exact = record(dir, "exact.jsonl", kDrifter, 10, "exact");
+  EXPECT_EQ(command(doubles, TraceReference::rounded).code, 0);
+  EXPECT_EQ(command(exact, TraceReference::exact).code, 0);
+  const Outcome d = command(doubles, TraceReference::exact);
+  EXPECT_EQ(d.code, 1);
+  EXPECT_TRUE(d.out.starts_with("circles check-trace: " + doubles +
+                                ":7: step 6 differs from the oracle's exact sequence from line 1, rounded: circle 0, "
+                                "field px: expected " + shown(0.1, "0.1") + ", actual " +
+                                shown(0.09999999999999999, "0.09999999999999999") + "\n  the worlds before it"))
+      << d.out;
+  const Outcome e = command(exact, TraceReference::rounded);
+  EXPECT_EQ(e.code, 1);
+  EXPECT_TRUE(e.out.starts_with("circles check-trace: " + exact +
+                                ":7: step 6 differs from the correctly rounded step of line 6: circle 0, field px: "
+                                "expected " + shown(0.09999999999999999, "0.09999999999999999") + ", actual " +
+                                shown(0.1, "0.1") + "\n  which decision: none"))
+      << e.out;
+}
+
+TEST(check_trace, a_world_after_a_step_that_overflows_is_a_divergence) {
+  // DBL_MAX + 1e308/60 rounds to infinity: no world can follow the first.
+  TempDir dir;
+  const std::string path = dir.write("t.jsonl",
+                                     "{\"step\":0,\"circles\":[[1.7976931348623157e+308,0.0,1e+308,0.0,1.0]]}\n"
+                                     "{\"step\":1,\"circles\":[[1.7976931348623157e+308,0.0,1e+308,0.0,1.0]]}\n");
+  const Outcome o = command(path);
+  EXPECT_EQ(o.code, 1);
+  EXPECT_EQ(o.out.substr(0, o.out.find('\n')),
+            "circles check-trace: " + path + ":2: step 1 differs from the correctly rounded step of line 1: the step "
+            "overflows (circle 0, field px: the position p + v/60 overflows to infinity), so no world can follow, "
+            "yet the trace holds one");
+  EXPECT_EQ(command(path, TraceReference::exact).code, 1);
+}
+
+TEST(check_trace, a_trace_of_one_world_agrees_with_no_step_to_check) {
+  TempDir dir;
+  const std::string path = dir.write("t.jsonl", "{\"step\":7,\"circles\":[]}");  // no final newline
+  const Outcome o = command(path);
+  EXPECT_EQ(o.code, 0);
+  EXPECT_EQ(o.out, "circles check-trace: " + path +
+                       ": agrees with the correctly rounded step at each of its 0 steps (steps 7 to 7, 0 circles); "
+                       "state hash of step 7: cbf29ce484222325, trajectory hash: cbf29ce484222325\n");
+}
+
+TEST(check_trace, reads_any_json_layout_and_crlf_line_ends) {
+  TempDir dir;
+  const std::string path = dir.write("t.jsonl",
+                                     " { \"circles\" : [ [ 0 , 0 , 60 , 0 , 1 ] ] , \"step\" : 0 } \r\n"
+                                     "{\"step\":1,\"circles\":[[1.0,0.0,60.0,0.0,1.0]]}\r\n");
+  EXPECT_EQ(command(path).code, 0);
+}
+
+// ── Hostile traces: exit 2, naming the file, the line and the reason ──────────────────────────────────────
+
+TEST(check_trace, a_missing_file_exits_2_naming_it) {
+  TempDir dir;
+  const std::string path = (dir.path / "none.jsonl").string();
+  const Outcome o = command(path);
+  EXPECT_EQ(o.code, 2);
+  EXPECT_EQ(o.out, "");
+  EXPECT_EQ(o.err, "circles check-trace: " + path + ": cannot open the file: No such file or directory\n");
+}
+
+TEST(check_trace, a_directory_exits_2_as_not_a_file) {
+  TempDir dir;
+  const Outcome o = command(dir.path.string());
+  EXPECT_EQ(o.code, 2);
+  EXPECT_EQ(o.err, "circles check-trace: " + dir.path.string() + ": cannot read the file: it is a directory\n");
+}
+
+TEST(check_trace, an_empty_or_blank_file_exits_2_as_empty) {
+  TempDir dir;
+  const std::string empty = "empty file, expected one world per line {\"step\": t, \"circles\": [[px, py, vx, vy, r], ...]}";
+  for (const char* bytes : {"", "\n", " \t\r\n\n"}) {
+    const std::string path = dir.write("t.jsonl", bytes);
+    const Outcome o = command(path);
+    EXPECT_EQ(o.code, 2);
+    EXPECT_EQ(o.err, "circles check-trace: " + path + ": " + empty + "\n");
+  }
+}
+
+TEST(trace_reader, names_the_line_and_reason_of_a_malformed_line) {
+  EXPECT_EQ(read_error("{\"step\":0,\"circles\":[]}\n{\"step\":1,\"circles\":[]}\n{\"step\":2,\"circles\":[[0,0,0,0]]}\n"),
+            "t.jsonl:3: circle 0: expected 5 numbers [px, py, vx, vy, r], found 4");
+  EXPECT_EQ(read_error("{\"step\":0,\"circles\":[[0,0,0,0,-1]]}\n"),
+            "t.jsonl:1: circle 0, field r: radius -1 is negative (r >= 0, the resolved profile) (not an element of C)");
+  // Column 23 is the N: 20 bytes of {"step":0,"circles": and two brackets before it.
+  EXPECT_EQ(read_error("{\"step\":0,\"circles\":[[NaN,0,0,0,1]]}\n"),
+            "t.jsonl:1: malformed JSON at column 23: syntax error while parsing value - invalid literal; last read: "
+            "'\"circles\":[[N'");
+  EXPECT_EQ(read_error("{\"step\":0,\"circles\":[[1e309,0,0,0,1]]}\n"),
+            "t.jsonl:1: circle 0, field px: 1e309 is beyond the double range");
+  EXPECT_EQ(read_error("{\"id\":0,\"circles\":[]}\n"),
+            "t.jsonl:1: unexpected key \"id\" (a line has exactly the keys \"step\" and \"circles\")");
+}
+
+TEST(trace_reader, names_a_truncated_last_line) {
+  EXPECT_EQ(read_error("{\"step\":0,\"circles\":[]}\n{\"step\":1,\"circ"),
+            "t.jsonl:2: malformed JSON at column 16: syntax error while parsing object key - invalid string: missing "
+            "closing quote; last read: '\"circ'; expected string literal");
+}
+
+TEST(trace_reader, refuses_steps_that_are_not_consecutive) {
+  EXPECT_EQ(read_error("{\"step\":3,\"circles\":[]}\n{\"step\":4,\"circles\":[]}\n{\"step\":6,\"circles\":[]}\n"),
+            "t.jsonl:3: \"step\": expected 5, found 6 (the steps of a trace are consecutive)");
+  EXPECT_EQ(read_error("{\"step\":3,\"circles\":[]}\n{\"step\":3,\"circles\":[]}\n"),
+            "t.jsonl:2: \"step\": expected 4, found 3 (the steps of a trace are consecutive)");
+  EXPECT_EQ(read_error("{\"step\":18446744073709551615,\"circles\":[]}\n{\"step\":0,\"circles\":[]}\n"),
+            "t.jsonl:2: \"step\": found 0 after 18446744073709551615, the largest step a trace can hold");
+  EXPECT_EQ(read_error("{\"step\":-1,\"circles\":[]}\n"),
+            "t.jsonl:1: \"step\": expected an integer from 0 to 18446744073709551615, found -1");
+}
+
+TEST(trace_reader, refuses_worlds_of_another_length_than_the_first) {
+  EXPECT_EQ(read_error("{\"step\":0,\"circles\":[[0,0,0,0,1]]}\n{\"step\":1,\"circles\":[]}\n"),
+            "t.jsonl:2: 0 circles, but the first world has 1 (a step maps circle k to circle k)");
+}
+
+TEST(trace_reader, refuses_an_empty_line_between_worlds_and_before_the_first) {
+  const std::string empty = "empty line, expected an object {\"step\": N, \"circles\": [[px, py, vx, vy, r], ...]}";
+  EXPECT_EQ(read_error("{\"step\":0,\"circles\":[]}\n\n{\"step\":1,\"circles\":[]}\n"), "t.jsonl:2: " + empty);
+  EXPECT_EQ(read_error("{\"step\":0,\"circles\":[]}\n\n"), "t.jsonl:2: " + empty);
+  EXPECT_EQ(read_error("\n \n{\"step\":0,\"circles\":[]}\n"), "t.jsonl:1: " + empty);
+}
+
+TEST(trace_reader, refuses_a_nul_byte_and_invalid_utf8_as_escaped_bytes) {
+  using namespace std::string_literals;
+  // The NUL is byte 24, after the 23 bytes of the object.
+  EXPECT_EQ(read_error("{\"step\":0,\"circles\":[]}\0\n"s),
+            "t.jsonl:1: malformed JSON at column 24: a NUL byte, which JSON text cannot contain");
+  // The invalid byte is quoted as \xC3, so the message stays one line of ASCII.
+  EXPECT_EQ(read_error("{\"st\xC3\x28p\":0,\"circles\":[]}\n"),
+            "t.jsonl:1: malformed JSON at column 6: syntax error while parsing object key - invalid string: ill-formed "
+            "UTF-8 byte; last read: '\"st\\xC3('; expected string literal");
+}
+
+TEST(trace_reader, reports_the_line_of_each_world_it_returns) {
+  std::istringstream in("{\"step\":0,\"circles\":[]}\n{\"step\":1,\"circles\":[]}\n");
+  TraceReader reader(in, "t.jsonl");
+  EXPECT_EQ(reader.line(), 0u);
+  ASSERT_TRUE(reader.next());
+  EXPECT_EQ(reader.line(), 1u);
+  const std::optional<Line> second = reader.next();
+  ASSERT_TRUE(second);
+  EXPECT_EQ(second->number, 1u);
+  EXPECT_EQ(reader.line(), 2u);
+  EXPECT_FALSE(reader.next());
+  EXPECT_FALSE(reader.next());
+}
+
+TEST(check_trace, the_engine_names_are_double_and_exact) {
+  EXPECT_EQ(trace_reference("double"), TraceReference::rounded);
+  EXPECT_EQ(trace_reference("exact"), TraceReference::exact);
+  const auto e = thrown<std::invalid_argument>([] { trace_reference("oracle"); });
+  ASSERT_TRUE(e);
+  EXPECT_STREQ(e->what(), "--engine: \"oracle\" is not double or exact");
+}
+
+}  // namespace
+}  // namespace circles::cli
