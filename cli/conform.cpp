@@ -1,39 +1,25 @@
 #include "cli/conform.hpp"
 
+#include "cli/corpus.hpp"
+#include "cli/counterexample_svg.hpp"
 #include "cli/json_number.hpp"
-#include "impl/engine.hpp"
-#include "impl/predicate.hpp"
-#include "properties/generators.hpp"
-#include "spec/circle.hpp"
-#include "spec/oracle.hpp"
+#include "properties/boundaries.hpp"
 
 #include <rapidcheck.h>
 
-#include <bit>
 #include <charconv>
-#include <cmath>
 #include <cstdio>
-#include <stdexcept>
+#include <span>
+#include <variant>
 #include <vector>
 
 namespace circles::cli {
 namespace {
 
-constexpr const char* kFieldName[] = {"px", "py", "vx", "vy", "r"};
+using properties::NoAnswer;
+
 // Shrinking asks the candidate at most this many worlds: enough for worlds of 8 circles, bounded for a slow one.
 constexpr int kMaxShrinkQueries = 2000;
-
-// The distance in units in the last place between two finite doubles: their rank among the doubles, with
-// −0 and +0 one rank (bit patterns of negatives reflected below zero).
-std::uint64_t ulps_between(double a, double b) {
-  const auto rank = [](double x) {
-    const auto i = std::bit_cast<std::int64_t>(x);
-    return i < 0 ? std::numeric_limits<std::int64_t>::min() - i : i;
-  };
-  const std::int64_t ra = rank(a), rb = rank(b);
-  return ra >= rb ? static_cast<std::uint64_t>(ra) - static_cast<std::uint64_t>(rb)
-                  : static_cast<std::uint64_t>(rb) - static_cast<std::uint64_t>(ra);
-}
 
 std::string decimal_and_hex(double x) {
   std::string text;
@@ -43,59 +29,6 @@ std::string decimal_and_hex(double x) {
   return text + " (" + hex + ")";
 }
 
-// Which decision of circle k's step differs: its contacts by (3), exactly, on the input doubles.
-std::string decision(const Circles& in, std::size_t k, const Circles& expected, const Circles& actual) {
-  const auto same_velocity = [](const std::array<double, 5>& a, const std::array<double, 5>& b) {
-    return a[2] == b[2] && a[3] == b[3];
-  };
-  if (same_velocity(expected[k], actual[k])) return "none: the velocity is right, the position is not the nearest double";
-  std::vector<std::size_t> contacts;
-  for (std::size_t j = 0; j < in.size(); ++j)
-    if (j != k && impl::intersect_exact(in[k][0], in[k][1], in[k][4], in[j][0], in[j][1], in[j][4]))
-      contacts.push_back(j);
-  const std::string circle = "circle " + std::to_string(k);
-  if (contacts.empty()) return "intersect (3): " + circle + " touches no circle, yet its velocity changed";
-  if (same_velocity(actual[k], in[k]))
-    return "intersect (3): " + circle + " touches circle " + std::to_string(contacts.front()) +
-           (contacts.size() > 1 ? " and others" : "") + " but kept its own velocity";
-  for (const std::size_t j : contacts)
-    if (same_velocity(actual[k], in[j]))
-      return "the choice of e (8): " + circle + " took the velocity of circle " + std::to_string(j) +
-             ", a contact but not the least one";
-  return "the choice of e (8): " + circle + " took a velocity that none of its contacts has";
-}
-
-rc::Gen<Circles> worlds() {
-  // Half the cases from the suite's exact worlds (copies, ties, exact tangencies), rounded to doubles; half
-  // with every field from finite_double (every binade, subnormals, ±0, near DBL_MAX).
-  const auto rounded = rc::gen::map(properties::gen::world(spec::Radii::non_negative, 8),
-                                    [](const std::vector<spec::Circle>& w) {
-                                      Circles out;
-                                      for (const spec::Circle& c : w) out.push_back(spec::nearest_doubles(c));
-                                      return out;
-                                    });
-  const auto finite = [](const Circles& w) {
-    for (const auto& c : w)
-      for (const double x : c)
-        if (!std::isfinite(x)) return false;
-    return true;
-  };
-  return rc::gen::oneOf(rc::gen::suchThat(rounded, finite),
-                        properties::gen::double_world(8, properties::gen::finite_double()));
-}
-
-// The expected answer: impl::step_all_pairs, the exact step with every pair tested (intersect_exact,
-// advance_rounded), which tests/engine_test.cpp holds equal to spec::resolved_step_rounded on every world the
-// property suite generates; 50-100 times faster than the oracle on these small worlds. Nothing when a position
-// leaves the double range.
-std::optional<Circles> expected_step(const Circles& w) {
-  try {
-    return impl::step_all_pairs(impl::World{w}).circles();
-  } catch (const impl::PositionOverflow&) {
-    return std::nullopt;
-  }
-}
-
 // A failure of one case: the step of the chain (1-based), its input, the two answers and what differs.
 struct Failure {
   std::uint64_t step;
@@ -103,22 +36,25 @@ struct Failure {
   Difference difference;
 };
 
+// How a chain that did not fail ended: every step checked; no step checked, because w_0 has no expected answer
+// (its next world leaves the double range, or, replayed in the literal profile, it is outside the domain);
+// or checked up to a world with no expected answer.
+enum class Ending { checked, skipped, cut_short };
+
 class Checker {
  public:
   Checker(Candidate& candidate, const ConformOptions& options) : candidate_(candidate), options_(options) {}
 
-  // Runs the chain from w; nullopt when it conforms. `skipped` is set when the oracle leaves the double range
-  // first (the protocol cannot carry the question).
-  std::optional<Failure> run(const Circles& w, bool& skipped) {
-    skipped = false;
+  std::optional<Failure> run(const Circles& w, Ending& ending) {
+    ending = Ending::checked;
     Circles now = w;
     for (std::uint64_t step = 1; step <= options_.steps; ++step) {
-      const std::optional<Circles> reference = expected_step(now);
-      if (!reference) {
-        skipped = true;
+      const auto reference = properties::expected_step(now, options_.profile);
+      if (!std::holds_alternative<Circles>(reference)) {
+        ending = step == 1 ? Ending::skipped : Ending::cut_short;
         return std::nullopt;
       }
-      const Circles& expected = *reference;
+      const Circles& expected = std::get<Circles>(reference);
       const Circles actual = candidate_.answer(now, next_id_++);
       if (auto d = compare(now, expected, actual, options_.level)) return Failure{step, now, expected, actual, *d};
       now = actual;
@@ -126,15 +62,13 @@ class Checker {
     return std::nullopt;
   }
 
-  std::uint64_t queries() const { return next_id_; }
-
  private:
   Candidate& candidate_;
   const ConformOptions& options_;
   std::uint64_t next_id_ = 1;
 };
 
-void print_world(std::ostream& out, const char* title, const Circles& w) {
+void print_world(std::ostream& out, const std::string& title, const Circles& w) {
   out << "  " << title << ":\n";
   for (std::size_t k = 0; k < w.size(); ++k) {
     std::string line = "    #" + std::to_string(k) + " [";
@@ -146,24 +80,100 @@ void print_world(std::ostream& out, const char* title, const Circles& w) {
   }
 }
 
-}  // namespace
-
-std::string Level::text() const {
-  if (ulps == 0) return "exact";
-  if (ulps == 1) return "faithful";
-  return "ulps:" + std::to_string(ulps);
+std::filesystem::path picture_path(const ConformOptions& options, const std::string& stem) {
+  if (!options.svg.empty()) return options.svg;
+  if (!options.save.empty()) return options.save / (stem + ".svg");
+  if (options.picture_in_temp) return std::filesystem::temp_directory_path() / ("circles-conform-" + stem + ".svg");
+  return {};
 }
 
-Level parse_level(std::string_view text) {
-  if (text == "exact") return Level{0};
-  if (text == "faithful") return Level{1};
-  if (text.starts_with("ulps:")) {
-    std::uint64_t k = 0;
-    const std::string_view digits = text.substr(5);
-    const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), k);
-    if (error == std::errc{} && end == digits.data() + digits.size() && !digits.empty()) return Level{k};
+// Prints the counterexample, draws its picture and, for a new one, saves it. `found` says where it came from
+// ("case 9 of seed 3 (family tangency), shrunk …" or "stored in DIR/F.json …"), `replay` how to see it again.
+void report(std::ostream& out, const Candidate& candidate, const ConformOptions& options, const Failure& failure,
+            const std::string& found, const std::string& replay, StoredCounterexample* to_save,
+            const std::string& stem) {
+  const Difference& d = failure.difference;
+  const std::string profile = properties::name(options.profile);
+  std::vector<std::string> head{
+      "circles conform: " + candidate.name() + " does not conform (level " + options.level.text() + ", " + profile +
+          " profile)",
+      "counterexample: " + found,
+      "  step " + std::to_string(failure.step) + " of " + std::to_string(options.steps) + ", circle " +
+          std::to_string(d.circle) + ", field " + properties::field_name(d.field) + ": expected " +
+          decimal_and_hex(d.expected) + ", got " + decimal_and_hex(d.actual),
+      "  which decision: " + d.decision,
+  };
+  for (const std::string& line : head) out << line << "\n";
+  print_world(out, failure.step == 1 ? "the world asked (w_0)" : "the world asked (the candidate's own last answer)",
+              failure.input);
+  print_world(out,
+              options.profile == Profile::literal ? "expected (the literal oracle's step, rounded to nearest)"
+                                                  : "expected (the correctly rounded oracle step)",
+              failure.expected);
+  print_world(out, "answered", failure.actual);
+
+  if (to_save && !options.save.empty()) {
+    try {
+      out << "saved: " << save(options.save, *to_save).string() << "\n";
+    } catch (const CorpusError& e) {
+      out << "saved: not saved: " << e.what() << "\n";
+    }
   }
-  throw std::invalid_argument("--level: \"" + std::string(text) + "\" is not exact, faithful or ulps:K (K an integer)");
+  if (const std::filesystem::path svg = picture_path(options, stem); !svg.empty()) {
+    try {
+      write_atomically(svg, counterexample_svg({failure.input, failure.expected, failure.actual, d.circle,
+                                                options.profile, head}));
+      out << "picture: " << svg.string() << "\n";
+    } catch (const std::exception& e) {
+      out << "picture: not drawn: " << e.what() << "\n";
+    }
+  }
+  out << "replay: " << replay << "\n";
+}
+
+// "lattice 59, random-doubles 59, …", wrapped before 110 columns, each line indented.
+void print_families(std::ostream& out, std::span<const properties::Family> families,
+                    const std::vector<std::uint64_t>& checked) {
+  std::string line = "  cases checked per family:";
+  for (std::size_t f = 0; f < families.size(); ++f) {
+    const std::string item =
+        std::string(" ") + properties::name(families[f]) + " " + std::to_string(checked[f]) + (f + 1 < families.size() ? "," : "");
+    if (line.size() + item.size() > 110) {
+      out << line << "\n";
+      line = "   ";
+    }
+    line += item;
+  }
+  out << line << "\n";
+}
+
+// Case c's family and generator: the families of the profile in turn.
+class Cases {
+ public:
+  explicit Cases(Profile profile) : families_(properties::families(profile)) {
+    for (const properties::Family f : families_) gens_.push_back(properties::gen::boundary_world(f, profile));
+  }
+  std::span<const properties::Family> families() const { return families_; }
+  std::size_t family(std::uint64_t c) const { return static_cast<std::size_t>(c % families_.size()); }
+  // Case c's world from its random stream. RapidCheck's sizes cycle 0 … 99 over a run (the families'
+  // generators ignore it).
+  rc::Shrinkable<Circles> world(std::uint64_t c, const rc::Random& random) const {
+    return gens_[family(c)](random, static_cast<int>(c % rc::kNominalSize));
+  }
+
+ private:
+  std::span<const properties::Family> families_;
+  std::vector<rc::Gen<Circles>> gens_;
+};
+
+}  // namespace
+
+std::vector<Circles> case_worlds(std::uint64_t seed, std::uint64_t cases, Profile profile) {
+  const Cases all(profile);
+  rc::Random stream(seed);
+  std::vector<Circles> worlds;
+  for (std::uint64_t c = 0; c < cases; ++c) worlds.push_back(all.world(c, stream.split()).value());
+  return worlds;
 }
 
 std::pair<std::uint64_t, std::uint64_t> parse_shard(std::string_view text) {
@@ -179,32 +189,77 @@ std::pair<std::uint64_t, std::uint64_t> parse_shard(std::string_view text) {
   return {i, n};
 }
 
-std::optional<Difference> compare(const Circles& input, const Circles& expected, const Circles& actual, Level level) {
-  for (std::size_t k = 0; k < expected.size(); ++k)
-    for (int f = 0; f < 5; ++f) {
-      const double e = expected[k][static_cast<std::size_t>(f)], a = actual[k][static_cast<std::size_t>(f)];
-      // Velocities and radii are copied, never computed: exact at every level. Positions within the level.
-      const bool position = f < 2;
-      const bool equal = position ? ulps_between(e, a) <= level.ulps : e == a;
-      if (!equal) return Difference{k, f, e, a, decision(input, k, expected, actual)};
-    }
-  return std::nullopt;
-}
-
 int conform(Candidate& candidate, const ConformOptions& options, std::ostream& out) {
+  // Paths first: a --save or --svg that cannot be used is a usage error, found before any case runs.
+  if (!options.save.empty()) {
+    std::error_code error;
+    std::filesystem::create_directories(options.save, error);
+    if (error || !std::filesystem::is_directory(options.save))
+      throw ConformError("--save: cannot use the directory " + options.save.string() +
+                         (error ? ": " + error.message() : ": it is not a directory"));
+  }
+  if (!options.svg.empty()) {
+    const std::filesystem::path parent = options.svg.parent_path().empty() ? "." : options.svg.parent_path();
+    if (!std::filesystem::is_directory(parent))
+      throw ConformError("--svg: cannot write " + options.svg.string() + ": the directory " + parent.string() +
+                         " does not exist");
+  }
+  const std::string profile = properties::name(options.profile);
+  const std::string replay_options = " --level " + options.level.text() +
+                                     (options.steps > 1 ? " --steps " + std::to_string(options.steps) : "") +
+                                     (options.profile == Profile::literal ? " --profile literal" : "");
   Checker checker(candidate, options);
-  const rc::Gen<Circles> gen = worlds();
+
+  // 1. The corpus, replayed first.
+  std::uint64_t replayed = 0, not_replayed = 0;
+  if (!options.save.empty()) {
+    std::vector<std::pair<std::filesystem::path, StoredCounterexample>> corpus;
+    try {
+      corpus = load_corpus(options.save);
+    } catch (const CorpusError& e) {
+      throw ConformError(std::string("--save: ") + e.what());
+    }
+    for (const auto& [file, stored] : corpus) {
+      Ending ending = Ending::checked;
+      const std::optional<Failure> failure = checker.run(stored.world, ending);
+      if (ending == Ending::skipped) {
+        ++not_replayed;
+        continue;
+      }
+      ++replayed;
+      if (!failure) continue;
+      std::string found = "stored in " + file.string() + ", replayed first";
+      if (stored.seed && stored.case_index)
+        found += " (found as case " + std::to_string(*stored.case_index) + " of seed " + std::to_string(*stored.seed) +
+                 (stored.family.empty() ? "" : ", family " + stored.family) + ")";
+      report(out, candidate, options, *failure, found,
+             "--save " + options.save.string() + replay_options + " (the corpus is replayed first)", nullptr,
+             file.stem().string());
+      return 1;
+    }
+  }
+
+  // 2. The generated cases, in rounds of one case per family.
+  const Cases all(options.profile);
+  const std::span<const properties::Family> families = all.families();
+  const std::uint64_t F = families.size();
+  std::vector<std::uint64_t> drawn(F, 0), checked(F, 0);
+  std::uint64_t cases = 0, skipped = 0, cut_short = 0;
   rc::Random stream(options.seed);
-  std::uint64_t checked = 0, skipped = 0;
-  for (std::uint64_t c = 0; c < options.cases; ++c) {
+  // --case I replays case I whatever --cases says: the replay line of a report does not repeat it.
+  const std::uint64_t end = options.only_case ? *options.only_case + 1 : options.cases;
+  for (std::uint64_t c = 0; c < end; ++c) {
     const rc::Random random = stream.split();  // case c's stream, whichever cases this run checks
-    if (options.only_case ? c != *options.only_case : c % options.shards != options.shard) continue;
-    // RapidCheck's sizes cycle 0 … 99 over a run: small worlds first, then larger ones.
-    rc::Shrinkable<Circles> world = gen(random, static_cast<int>(c % rc::kNominalSize));
-    bool skip = false;
-    std::optional<Failure> failure = checker.run(world.value(), skip);
-    ++checked;
-    skipped += skip;
+    if (options.only_case ? c != *options.only_case : (c / F) % options.shards != options.shard) continue;
+    const std::size_t family = all.family(c);
+    rc::Shrinkable<Circles> world = all.world(c, random);
+    Ending ending = Ending::checked;
+    std::optional<Failure> failure = checker.run(world.value(), ending);
+    ++cases;
+    ++drawn[family];
+    if (ending == Ending::skipped) ++skipped;
+    else ++checked[family];
+    cut_short += ending == Ending::cut_short;
     if (!failure) continue;
     // Shrink: take the first simpler world that still fails, until none does (or the budget is spent).
     const std::size_t circles_before = world.value().size();
@@ -214,8 +269,8 @@ int conform(Candidate& candidate, const ConformOptions& options, std::ostream& o
       auto candidates = world.shrinks();
       while (auto next = candidates.next()) {
         if (++queries > kMaxShrinkQueries) break;
-        bool s = false;
-        if (auto f = checker.run(next->value(), s)) {
+        Ending e = Ending::checked;
+        if (auto f = checker.run(next->value(), e)) {
           world = *next;
           failure = std::move(f);
           ++shrinks;
@@ -224,30 +279,56 @@ int conform(Candidate& candidate, const ConformOptions& options, std::ostream& o
         }
       }
     }
-    const Difference& d = failure->difference;
-    out << "circles conform: " << candidate.name() << " does not conform (level " << options.level.text()
-        << ", resolved profile)\n";
-    out << "counterexample: case " << c << " of seed " << options.seed << ", shrunk from " << circles_before
-        << " to " << world.value().size() << " circles in " << shrinks << " steps\n";
-    out << "  step " << failure->step << " of " << options.steps << ", circle " << d.circle << ", field "
-        << kFieldName[d.field] << ": expected " << decimal_and_hex(d.expected) << ", got "
-        << decimal_and_hex(d.actual) << "\n";
-    out << "  which decision: " << d.decision << "\n";
-    print_world(out, failure->step == 1 ? "the world asked (w_0)" : "the world asked (the candidate's own last answer)",
-                failure->input);
-    print_world(out, "expected (the correctly rounded oracle step)", failure->expected);
-    print_world(out, "answered", failure->actual);
-    out << "replay: --seed " << options.seed << " --case " << c << (options.steps > 1 ? " --steps " + std::to_string(options.steps) : "")
-        << " --level " << options.level.text() << "\n";
+    const std::string family_name = properties::name(families[family]);
+    StoredCounterexample stored{options.profile, failure->input, options.level.text(), family_name, candidate.name(),
+                                options.seed, c, options.steps, failure->step, failure->expected, failure->actual,
+                                failure->difference};
+    report(out, candidate, options, *failure,
+           "case " + std::to_string(c) + " of seed " + std::to_string(options.seed) + " (family " + family_name +
+               "), shrunk from " + std::to_string(circles_before) + " to " + std::to_string(world.value().size()) +
+               " circles in " + std::to_string(shrinks) + " steps",
+           "--seed " + std::to_string(options.seed) + " --case " + std::to_string(c) + replay_options, &stored,
+           stem(stored));
     return 1;
   }
   candidate.finish();
-  out << "circles conform: " << candidate.name() << " conforms: " << checked << " cases";
+
+  // 3. Every family must have been checked: a family with no case is a gap in the check, not a pass.
+  if (!options.only_case && options.cases > 0)
+    for (std::size_t f = 0; f < F; ++f) {
+      if (checked[f] > 0) continue;
+      const std::string family = properties::name(families[f]);
+      if (drawn[f] == 0)
+        throw ConformError("no case of the family " + family + " was checked: each round of " + std::to_string(F) +
+                           " cases draws every family of the " + profile + " profile once, and this run " +
+                           (options.shards > 1 ? "(shard " + std::to_string(options.shard) + "/" +
+                                                     std::to_string(options.shards) + ") "
+                                               : std::string()) +
+                           "checked " + std::to_string(cases) + "; raise --cases to at least " +
+                           std::to_string(F * options.shards));
+      throw ConformError("no case of the family " + family + " was checked: all " + std::to_string(drawn[f]) +
+                         " of its worlds were skipped (their next world leaves the double range)");
+    }
+
+  out << "circles conform: " << candidate.name() << " conforms: " << cases << " cases";
   if (skipped) out << " (" << skipped << " skipped: their next world leaves the double range)";
   out << ", " << options.steps << " step" << (options.steps == 1 ? "" : "s") << " each, level "
-      << options.level.text() << ", seed " << options.seed;
+      << options.level.text() << ", seed " << options.seed << ", " << profile << " profile";
   if (options.shards > 1) out << ", shard " << options.shard << "/" << options.shards;
   out << "\n";
+  if (cases > 0) print_families(out, families, checked);
+  if (cut_short)
+    out << "  " << cut_short << " chains ended early: their next world leaves the double range"
+        << (options.profile == Profile::literal ? " or the literal domain" : "") << "\n";
+  if (!options.save.empty()) {
+    out << "  corpus: " << replayed << " stored counterexample" << (replayed == 1 ? "" : "s") << " replayed from "
+        << options.save.string();
+    if (not_replayed)
+      out << " (" << not_replayed << " not: no expected answer"
+          << (options.profile == Profile::literal ? ", outside the literal domain or beyond the double range" : ", beyond the double range")
+          << ")";
+    out << "\n";
+  }
   return 0;
 }
 

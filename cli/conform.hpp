@@ -1,58 +1,72 @@
-// `circles conform`: checks a candidate (cli/candidate.hpp) against the correctly rounded oracle step on
-// generated worlds, and reports the first counterexample, shrunk to a minimal world.
+// `circles conform`: checks a candidate (cli/candidate.hpp) against the spec on generated worlds, and reports
+// the first counterexample, shrunk to a minimal world, with a picture (cli/counterexample_svg.hpp) and, on
+// request, as a data file that later runs replay first (cli/corpus.hpp).
 //
-// Each case is a world drawn from the property suite's generators (properties/generators.hpp) with its own
-// random stream, split in order from the seed, so case i of a seed is the same world on every run, shard and
-// machine. A case chains `steps` steps: the candidate is fed its own outputs, and each answer is checked
-// against the oracle applied to the candidate's input. A world whose oracle step leaves the double range
-// cannot be asked (the protocol carries finite doubles) and is skipped, and counted.
+// Cases come in rounds of one case per family of the profile (properties/boundaries.hpp): case c is drawn from
+// family c mod F, F the number of families, with its own random stream split in order from the seed, so case c
+// of a seed is the same world on every run, shard and machine. A shard takes whole rounds, so each shard sees
+// every family. A case chains `steps` steps: the candidate is fed its own outputs, and each answer is checked
+// against the expected answer for the candidate's input (properties::expected_step). A world whose expected
+// answer leaves the double range cannot be asked (the protocol carries finite doubles) and is skipped, and
+// counted; in the literal profile a chain also stops at a world outside the literal domain.
 #pragma once
 
 #include "cli/candidate.hpp"
 #include "cli/protocol.hpp"
+#include "properties/conformance.hpp"
 
 #include <cstdint>
+#include <filesystem>
 #include <optional>
 #include <ostream>
+#include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace circles::cli {
 
-// How close an answer must be. Decisions (velocities, and radii, which never change) must be exact at every
-// level; positions must equal the nearest double (exact), or be within `ulps` units in the last place.
-struct Level {
-  std::uint64_t ulps = 0;  // 0: exact; 1: faithful
-  std::string text() const;
-};
-// "exact", "faithful" (ulps:1) or "ulps:K". Throws std::invalid_argument with a message for --level.
-Level parse_level(std::string_view text);
+using properties::compare;
+using properties::Difference;
+using properties::Level;
+using properties::parse_level;
+using properties::Profile;
 
 struct ConformOptions {
   Level level;
   std::uint64_t cases = 1000;
   std::uint64_t seed = 1;
   std::uint64_t steps = 1;  // steps chained per case
-  std::uint64_t shard = 0, shards = 1;  // this run checks the cases c with c mod shards == shard
+  std::uint64_t shard = 0, shards = 1;  // this run checks the rounds q with q mod shards == shard
   std::optional<std::uint64_t> only_case;  // replay one case
+  Profile profile = Profile::resolved;
+  // The corpus: every *.json file here is replayed first, and a new counterexample is saved here (with its
+  // picture beside it). Empty: none. Created if missing.
+  std::filesystem::path save{};
+  // Where to draw the counterexample's picture; empty: beside the saved file if `save` is set, else in the
+  // temporary directory if `picture_in_temp`, else nowhere.
+  std::filesystem::path svg{};
+  bool picture_in_temp = false;
 };
 
 // "i/n" → shard i of n (0 ≤ i < n). Throws std::invalid_argument with a message for --shard.
 std::pair<std::uint64_t, std::uint64_t> parse_shard(std::string_view text);
 
-// What differs in one answer.
-struct Difference {
-  std::size_t circle;
-  int field;  // 0 px … 4 r
-  double expected, actual;
-  std::string decision;  // which decision differs, or that none does (then only the position)
+// A run that cannot give a verdict: a corpus file that cannot be read, a --save or --svg path that cannot be
+// written, or a family of which no case was checked (too few cases for a round of every family, or every one
+// of its worlds skipped). what() says which and what to do; `circles conform` exits 2.
+class ConformError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
 };
 
-// The first difference between `actual` and `expected`, the oracle's answer for `input`, at `level`.
-std::optional<Difference> compare(const Circles& input, const Circles& expected, const Circles& actual, Level level);
+// The worlds of cases 0 … cases − 1 of `seed` in `profile`, each as conform draws it (before any shrinking),
+// whatever the shard: for tools that hand out conform's worlds (cli/vectors.hpp).
+std::vector<Circles> case_worlds(std::uint64_t seed, std::uint64_t cases, Profile profile = Profile::resolved);
 
-// Runs the check, printing a summary (and the counterexample, if any) on `out`. Returns 0 when every case
-// conforms, 1 for a counterexample. Throws BrokenCandidate.
+// Runs the check, printing a summary with the number of cases checked per family (and the counterexample, if
+// any) on `out`. Returns 0 when every case conforms, 1 for a counterexample. Throws BrokenCandidate and
+// ConformError.
 int conform(Candidate& candidate, const ConformOptions& options, std::ostream& out);
 
 }  // namespace circles::cli

@@ -1,10 +1,15 @@
 // `circles conform` in process: the comparison and its levels, the verdicts on right and wrong candidates, the
-// shrunk counterexample, and candidate programs that crash, hang, or answer out of protocol.
+// shrunk counterexample, rounds of every family and shards, the literal profile, counterexamples saved and
+// replayed (cli/corpus.hpp) and drawn (cli/counterexample_svg.hpp), and candidate programs that crash, hang, or
+// answer out of protocol.
 #include "cli/candidate.hpp"
 #include "cli/conform.hpp"
+#include "cli/corpus.hpp"
+#include "cli/counterexample_svg.hpp"
 
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -12,14 +17,18 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <limits>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include <signal.h>
 #include <unistd.h>
 
 #include "impl/rounding.hpp"
+#include "properties/boundaries.hpp"
 #include "spec/oracle.hpp"
 #include "tests/thrown.hpp"
 
@@ -145,19 +154,338 @@ TEST(conform, rejects_a_strict_intersect_with_a_counterexample_shrunk_to_two_tan
   EXPECT_NE(report.find("replay: --seed 7 --case "), std::string::npos) << report;
 }
 
-TEST(conform, shards_split_the_cases_without_overlap) {
-  // Each shard sees every case index once between them: a candidate that fails only case 5 fails in shard 1/2.
+TEST(conform, shards_take_whole_rounds_of_every_family_without_overlap) {
+  // Cases come in rounds of one per family; shard i/n takes the rounds q with q mod n = i. With the 17
+  // families of the resolved profile, 100 cases are rounds 0 … 4 (17 each) and 15 cases of round 5: shard
+  // 0/2 asks rounds 0, 2 and 4, shard 1/2 rounds 1, 3 and the partial 5.
+  ASSERT_EQ(properties::families(Profile::resolved).size(), 17u);
   int status = -1;
   std::uint64_t asked = 0;
   FunctionCandidate counting([&](const Circles& w) {
     ++asked;
     return spec::resolved_step_rounded(w);
   });
-  run(counting, ConformOptions{{0}, 100, 3, 1, 0, 2, {}}, status);
+  const std::string first_report = run(counting, ConformOptions{{0}, 100, 3, 1, 0, 2, {}}, status);
   const std::uint64_t first = asked;
   run(counting, ConformOptions{{0}, 100, 3, 1, 1, 2, {}}, status);
-  EXPECT_EQ(first, 50u);
+  EXPECT_EQ(first, 51u);
   EXPECT_EQ(asked, 100u);
+  // Each shard saw every family: three cases of each in shard 0.
+  EXPECT_NE(first_report.find("lattice 3, random-doubles 3, tangency 3,"), std::string::npos) << first_report;
+}
+
+TEST(conform, refuses_a_run_too_short_to_reach_every_family) {
+  EngineCandidate engine_candidate(engine("double"), 1);
+  std::ostringstream out;
+  const auto e = thrown<ConformError>([&] { conform(engine_candidate, ConformOptions{{0}, 10, 3, 1, 0, 1, {}}, out); });
+  ASSERT_TRUE(e);
+  EXPECT_EQ(std::string(e->what()),
+            "no case of the family mutual-contacts was checked: each round of 17 cases draws every family of the resolved "
+            "profile once, and this run checked 10; raise --cases to at least 17");
+  const auto sharded =
+      thrown<ConformError>([&] { conform(engine_candidate, ConformOptions{{0}, 20, 3, 1, 1, 2, {}}, out); });
+  ASSERT_TRUE(sharded);
+  EXPECT_EQ(std::string(sharded->what()),
+            "no case of the family ulp-nudge was checked: each round of 17 cases draws every family of the resolved "
+            "profile once, and this run (shard 1/2) checked 3; raise --cases to at least 34");
+  // Replaying one case is not a run over the families; nor need --cases reach it.
+  ConformOptions one{{0}, 1000, 3, 1, 0, 1, 1500};
+  int status = -1;
+  EXPECT_NE(run(engine_candidate, one, status).find("conforms: 1 cases"), std::string::npos);
+}
+
+// ── The literal profile ────────────────────────────────────────────────────────────────────────────────
+
+TEST(conform, the_literal_profile_asks_only_worlds_inside_the_seeds_domain_and_the_double_engine_passes) {
+  std::uint64_t asked = 0, outside = 0, with_contacts = 0;
+  FunctionCandidate literal([&](const Circles& w) {
+    ++asked;
+    outside += properties::outside_literal_domain(w).has_value();
+    for (std::size_t a = 0; a < w.size(); ++a)
+      for (std::size_t b = a + 1; b < w.size(); ++b)
+        if (spec::intersect(spec::from_doubles(w[a], a, spec::Radii::positive),
+                            spec::from_doubles(w[b], b, spec::Radii::positive))) {
+          ++with_contacts;
+          a = b = w.size();
+        }
+    return spec::resolved_step_rounded(w);  // inside the domain, the resolved step is the literal one
+  });
+  int status = -1;
+  ConformOptions options{{0}, 1500, 5, 3, 0, 1, {}};
+  options.profile = Profile::literal;
+  const std::string report = run(literal, options, status);
+  EXPECT_EQ(status, 0) << report;
+  EXPECT_EQ(outside, 0u);
+  EXPECT_GT(with_contacts, asked / 3);  // not only worlds where nothing meets
+  EXPECT_NE(report.find("literal profile"), std::string::npos) << report;
+  EngineCandidate double_engine(engine("double"), 1);
+  EXPECT_EQ(conform(double_engine, options, std::cout), 0);
+}
+
+TEST(conform, the_literal_profile_refuses_a_step_that_ignores_the_product_order) {
+  // The resolved and literal steps agree inside the literal domain, so a wrong decision shows in both; here a
+  // step that takes the contact with the greatest key, which a world with two ordered contacts exposes.
+  FunctionCandidate greatest([](const Circles& w) {
+    Circles out = spec::resolved_step_rounded(w);
+    for (std::size_t k = 0; k < w.size(); ++k) {
+      std::optional<std::size_t> best;
+      for (std::size_t j = 0; j < w.size(); ++j)
+        if (j != k && spec::intersect(spec::from_doubles(w[k], k, spec::Radii::positive),
+                                      spec::from_doubles(w[j], j, spec::Radii::positive)) &&
+            (!best || w[*best] < w[j]))
+          best = j;
+      if (best) {
+        out[k][2] = w[*best][2];
+        out[k][3] = w[*best][3];
+        out[k][0] = impl::advance_rounded(w[k][0], out[k][2]);
+        out[k][1] = impl::advance_rounded(w[k][1], out[k][3]);
+      }
+    }
+    return out;
+  });
+  int status = -1;
+  ConformOptions options{{0}, 1000, 5, 1, 0, 1, {}};
+  options.profile = Profile::literal;
+  const std::string report = run(greatest, options, status);
+  EXPECT_EQ(status, 1) << report;
+  EXPECT_NE(report.find("the choice of e (8)"), std::string::npos) << report;
+  EXPECT_NE(report.find("expected (the literal oracle's step, rounded to nearest)"), std::string::npos) << report;
+  EXPECT_NE(report.find("--profile literal"), std::string::npos) << report;
+}
+
+// ── Counterexamples as files: --save and --svg ─────────────────────────────────────────────────────────
+
+class TemporaryDirectory {
+ public:
+  TemporaryDirectory()
+      : path_(std::filesystem::temp_directory_path() /
+              ("circles-conform-test-" + std::to_string(::getpid()) + "-" + std::to_string(next_++))) {
+    std::filesystem::remove_all(path_);
+  }
+  ~TemporaryDirectory() { std::filesystem::remove_all(path_); }
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  static inline int next_ = 0;
+  std::filesystem::path path_;
+};
+
+std::vector<std::filesystem::path> files_in(const std::filesystem::path& dir, const std::string& extension) {
+  std::vector<std::filesystem::path> files;
+  if (std::filesystem::is_directory(dir))
+    for (const auto& entry : std::filesystem::directory_iterator(dir))
+      if (entry.path().extension() == extension) files.push_back(entry.path());
+  return files;
+}
+
+TEST(conform, saves_a_counterexample_with_its_picture_and_replays_it_first_on_every_run) {
+  const TemporaryDirectory corpus;
+  FunctionCandidate wrong(strict_intersect_step);
+  ConformOptions options{{0}, 1000, 7, 1, 0, 1, {}};
+  options.save = corpus.path();
+  int status = -1;
+  const std::string first = run(wrong, options, status);
+  EXPECT_EQ(status, 1) << first;
+  const auto saved = files_in(corpus.path(), ".json");
+  ASSERT_EQ(saved.size(), 1u) << first;
+  EXPECT_NE(first.find("saved: " + saved[0].string()), std::string::npos) << first;
+  const std::filesystem::path picture = saved[0].parent_path() / (saved[0].stem().string() + ".svg");
+  EXPECT_TRUE(std::filesystem::exists(picture));
+  EXPECT_NE(first.find("picture: " + picture.string()), std::string::npos) << first;
+
+  // The file holds the shrunk world, which the wrong step still gets wrong and the right one right.
+  const auto stored = load_corpus(corpus.path());
+  ASSERT_EQ(stored.size(), 1u);
+  const StoredCounterexample& c = stored[0].second;
+  EXPECT_EQ(c.seed, 7u);
+  ASSERT_TRUE(c.case_index);
+  EXPECT_EQ(c.candidate, "the function");
+  ASSERT_EQ(c.world.size(), 2u);
+  EXPECT_EQ(c.expected, spec::resolved_step_rounded(c.world));
+  EXPECT_EQ(c.actual, strict_intersect_step(c.world));
+  ASSERT_TRUE(c.difference);
+  EXPECT_NE(c.difference->decision.find("kept its own velocity"), std::string::npos);
+
+  // The next run replays it before any generated case, even with no cases at all.
+  options.cases = 0;
+  const std::string second = run(wrong, options, status);
+  EXPECT_EQ(status, 1) << second;
+  EXPECT_NE(second.find("counterexample: stored in " + saved[0].string() + ", replayed first (found as case " +
+                        std::to_string(*c.case_index) + " of seed 7, family "),
+            std::string::npos)
+      << second;
+  EXPECT_NE(second.find("replay: --save " + corpus.path().string()), std::string::npos) << second;
+  EXPECT_EQ(files_in(corpus.path(), ".json").size(), 1u);  // not saved twice
+
+  // A right step passes it, and says so.
+  FunctionCandidate right([](const Circles& w) { return spec::resolved_step_rounded(w); });
+  const std::string third = run(right, options, status);
+  EXPECT_EQ(status, 0) << third;
+  EXPECT_NE(third.find("corpus: 1 stored counterexample replayed from " + corpus.path().string()), std::string::npos)
+      << third;
+}
+
+TEST(conform, round_trips_a_counterexample_through_its_file_bit_for_bit) {
+  const double tiny = std::numeric_limits<double>::denorm_min();
+  StoredCounterexample c;
+  c.profile = Profile::literal;
+  c.world = {{-0.0, 0.1, 1e300, -tiny, 2.5}, {1.0 / 3, -2, 0, 60, tiny}};
+  c.level = "ulps:3";
+  c.family = "subnormals";
+  c.candidate = "the program `a \"quoted\" name`";
+  c.seed = 18446744073709551615u;
+  c.case_index = 12;
+  c.steps = 4;
+  c.step = 2;
+  c.expected = c.world;
+  c.actual = {{0, 0, 0, 0, 0}, {1, 1, 1, 1, 1}};
+  c.difference = Difference{1, 4, tiny, -0.0, "none: \"quoted\""};
+  const StoredCounterexample back = from_json(to_json(c), "x.json");
+  EXPECT_EQ(back.profile, c.profile);
+  ASSERT_EQ(back.world.size(), 2u);
+  for (std::size_t k = 0; k < 2; ++k)
+    for (std::size_t f = 0; f < 5; ++f)
+      EXPECT_EQ(std::bit_cast<std::uint64_t>(back.world[k][f]), std::bit_cast<std::uint64_t>(c.world[k][f]));
+  EXPECT_EQ(back.level, c.level);
+  EXPECT_EQ(back.family, c.family);
+  EXPECT_EQ(back.candidate, c.candidate);
+  EXPECT_EQ(back.seed, c.seed);
+  EXPECT_EQ(back.case_index, c.case_index);
+  EXPECT_EQ(back.steps, c.steps);
+  EXPECT_EQ(back.step, c.step);
+  EXPECT_EQ(back.actual, c.actual);
+  ASSERT_TRUE(back.difference);
+  EXPECT_EQ(back.difference->field, 4);
+  EXPECT_TRUE(std::signbit(back.difference->actual));
+  EXPECT_EQ(back.difference->decision, c.difference->decision);
+  // Equal worlds in one profile are one file; the other profile is another.
+  StoredCounterexample other = c;
+  other.seed = 1;
+  EXPECT_EQ(stem(other), stem(c));
+  other.profile = Profile::resolved;
+  EXPECT_NE(stem(other), stem(c));
+  EXPECT_EQ(stem(c).size(), std::string("counterexample-").size() + 16);
+}
+
+TEST(conform, refuses_corpus_files_it_cannot_replay_naming_the_file_and_the_place) {
+  const auto error = [](const std::string& text) {
+    const auto e = thrown<CorpusError>([&] { from_json(text, "F.json"); });
+    return e ? std::string(e->what()) : std::string("nothing thrown");
+  };
+  const std::string head = R"({"format": "circles-counterexample/1", "profile": "resolved", )";
+  EXPECT_EQ(error("{"), "F.json: malformed JSON: [json.exception.parse_error.101] parse error at line 1, column 2: "
+                        "syntax error while parsing object key - unexpected end of input; expected string literal");
+  EXPECT_EQ(error("[]"), "F.json: expected an object {\"format\": ..., \"profile\": ..., \"world\": ...}");
+  EXPECT_EQ(error(R"({"format": "circles-counterexample/1", "world": []})"), "F.json: missing key \"profile\"");
+  EXPECT_EQ(error(R"({"format": "other", "profile": "resolved", "world": []})"),
+            "F.json: key \"format\": expected \"circles-counterexample/1\", found \"other\"");
+  EXPECT_EQ(error(head + R"("world": [], "note": 1})"),
+            "F.json: unknown key \"note\" (a counterexample has the keys format, profile, world, level, seed, case, "
+            "family, steps, step, candidate, expected, actual and difference)");
+  EXPECT_EQ(error(R"({"format": "circles-counterexample/1", "profile": "exact", "world": []})"),
+            "F.json: key \"profile\": expected \"resolved\" or \"literal\", found \"exact\"");
+  EXPECT_EQ(error(head + R"("world": [[0, 0, 0, 0, -2]]})"),
+            "F.json: key \"world\": circle 0, field r: radius -2 is negative (r >= 0, the resolved profile) (not an "
+            "element of C)");
+  EXPECT_EQ(error(head + R"("world": [[0, 0, 0, 0]]})"),
+            "F.json: key \"world\": circle 0: expected 5 numbers [px, py, vx, vy, r]");
+  EXPECT_EQ(error(head + R"("world": [[0, 0, "1", 0, 1]]})"),
+            "F.json: key \"world\": circle 0, field vx: expected a number, found \"1\"");
+  EXPECT_EQ(error(head + R"("world": [[0, 0, 0, 0, 1e999]]})"),
+            "F.json: malformed JSON: [json.exception.out_of_range.406] number overflow parsing '1e999'");
+  // A number means the double nearest to it (cli/json_number.hpp): 2^53 + 1 is 2^53.
+  EXPECT_EQ(from_json(head + R"("world": [[9007199254740993, 0, 0, 0, 1]]})", "F.json").world[0][0], 0x1p53);
+  EXPECT_EQ(error(head + R"("world": [], "seed": -1})"), "F.json: key \"seed\": expected an integer >= 0, found -1");
+
+  // In a directory, the file is named by its path, and a run with --save stops before any case.
+  const TemporaryDirectory corpus;
+  std::filesystem::create_directories(corpus.path());
+  std::ofstream(corpus.path() / "bad.json") << "{";
+  EngineCandidate engine_candidate(engine("double"), 1);
+  ConformOptions options{{0}, 100, 1, 1, 0, 1, {}};
+  options.save = corpus.path();
+  std::ostringstream out;
+  const auto e = thrown<ConformError>([&] { conform(engine_candidate, options, out); });
+  ASSERT_TRUE(e);
+  EXPECT_TRUE(std::string(e->what()).starts_with("--save: " + (corpus.path() / "bad.json").string() + ": malformed JSON"))
+      << e->what();
+}
+
+TEST(conform, refuses_a_save_directory_or_picture_it_cannot_write_before_any_case) {
+  const TemporaryDirectory dir;
+  std::filesystem::create_directories(dir.path());
+  std::ofstream(dir.path() / "file") << "x";
+  std::uint64_t asked = 0;
+  FunctionCandidate counting([&](const Circles& w) {
+    ++asked;
+    return w;
+  });
+  std::ostringstream out;
+  ConformOptions options{{0}, 100, 1, 1, 0, 1, {}};
+  options.save = dir.path() / "file";
+  auto e = thrown<ConformError>([&] { conform(counting, options, out); });
+  ASSERT_TRUE(e);
+  EXPECT_EQ(std::string(e->what()), "--save: cannot use the directory " + (dir.path() / "file").string() + ": " +
+                                        std::make_error_code(std::errc::not_a_directory).message());
+  options.save.clear();
+  options.svg = dir.path() / "no" / "such" / "picture.svg";
+  e = thrown<ConformError>([&] { conform(counting, options, out); });
+  ASSERT_TRUE(e);
+  EXPECT_EQ(std::string(e->what()), "--svg: cannot write " + options.svg.string() + ": the directory " +
+                                        (dir.path() / "no" / "such").string() + " does not exist");
+  EXPECT_EQ(asked, 0u);
+}
+
+// Every number in the path data and positions of an SVG document.
+std::vector<double> coordinates_in(const std::string& svg) {
+  std::vector<double> xs;
+  static const std::regex attribute(R"re((?:\sd|\sx|\sy)="([^"]*)")re");
+  static const std::regex number(R"([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?|nan|inf)");
+  for (std::sregex_iterator a(svg.begin(), svg.end(), attribute), end; a != end; ++a) {
+    const std::string text = (*a)[1];
+    for (std::sregex_iterator n(text.begin(), text.end(), number); n != end; ++n) xs.push_back(std::stod(n->str()));
+  }
+  return xs;
+}
+
+TEST(conform, draws_worlds_from_the_subnormals_to_dbl_max_inside_the_picture) {
+  const double tiny = std::numeric_limits<double>::denorm_min();
+  const double huge = std::numeric_limits<double>::max();
+  for (const Circles& w : {Circles{{0, 0, 1, 0, 5 * tiny}, {3 * tiny, 4 * tiny, 0, 0, 0}},
+                           Circles{{-huge, huge, 0, 0, huge}, {huge, -huge, 0, 0, huge}, {0, 0, 0, 0, 0}},
+                           Circles{{1, 1, 0, 0, 0}}}) {
+    CounterexamplePicture picture{w, w, w, 0, Profile::resolved, {"a line of text"}};
+    picture.actual[0][0] = std::nextafter(w[0][0], 1.0);
+    const std::string svg = counterexample_svg(picture);
+    EXPECT_TRUE(svg.starts_with("<?xml")) << svg.substr(0, 100);
+    EXPECT_NE(svg.find(R"(width="900pt" height="760pt")"), std::string::npos);
+    const std::vector<double> xs = coordinates_in(svg);
+    EXPECT_GT(xs.size(), 50u);
+    for (const double x : xs) {
+      ASSERT_TRUE(std::isfinite(x)) << x;
+      ASSERT_GE(x, -20) << x;
+      ASSERT_LE(x, 920) << x;
+    }
+  }
+}
+
+TEST(conform, draws_one_line_for_each_contact_and_the_expected_and_answered_positions_dashed) {
+  // Contacts are orange, rgb(95%, 55%, 10%): one line for each touching pair, and one in the legend.
+  const auto contact_lines = [](const Circles& w) {
+    const std::string svg = counterexample_svg({w, w, w, 0, Profile::resolved, {}});
+    std::size_t lines = 0;
+    for (std::size_t at = 0; (at = svg.find("stroke:rgb(95%,55%,10%)", at)) != std::string::npos; ++at) ++lines;
+    return lines;
+  };
+  EXPECT_EQ(contact_lines({{0, 0, 0, 0, 1}, {10, 0, 0, 0, 1}}), 1u);
+  EXPECT_EQ(contact_lines({{0, 0, 0, 0, 1}, {2, 0, 0, 0, 1}}), 2u);  // tangent: (3) holds
+  EXPECT_EQ(contact_lines({{0, 0, 0, 0, 1}, {std::nextafter(2.0, 3.0), 0, 0, 0, 1}}), 1u);
+  EXPECT_EQ(contact_lines({{0, 0, 0, 0, 2}, {1, 0, 0, 0, 2}, {-1, 0, 0, 0, 2}}), 4u);  // three pairs
+  const std::string svg = counterexample_svg({{{0, 0, 60, 0, 1}}, {{1, 0, 60, 0, 1}}, {{2, 0, 60, 0, 1}}, 0,
+                                              Profile::resolved, {}});
+  std::size_t dashed = 0;
+  for (std::size_t at = 0; (at = svg.find("stroke-dasharray", at)) != std::string::npos; ++at) ++dashed;
+  EXPECT_EQ(dashed, 4u);  // expected and answered, in the picture and in the legend
 }
 
 // Programs that break the protocol: each is refused with what it did, and nothing of it outlives the check.

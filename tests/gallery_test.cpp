@@ -1,16 +1,25 @@
 // The gallery: deliberately wrong implementations, each of which `circles conform` with its default budget
-// (1000 cases, one step, level exact) must reject. One step function with a knob per mistake, so that each
-// entry differs from the correct step (all knobs off, which must conform) in exactly one way.
+// (1000 cases, one step, level exact, resolved profile) must reject, and the committed corpus of their
+// counterexamples. One step function with a knob per mistake, so that each entry differs from the correct step
+// (all knobs off, which must conform) in exactly one way.
 #include "cli/candidate.hpp"
 #include "cli/conform.hpp"
+#include "cli/corpus.hpp"
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <functional>
 #include <sstream>
 #include <string>
 #include <tuple>
+#include <variant>
 
 #include "impl/predicate.hpp"
 #include "impl/rounding.hpp"
@@ -103,34 +112,20 @@ Circles mistaken_step(const Circles& input, const Mistakes& m) {
 
 class Gallery : public Candidate {
  public:
-  explicit Gallery(Mistakes m) : m_(m) {}
+  Gallery(std::string mistake, Mistakes m) : mistake_(std::move(mistake)), m_(m) {}
   Circles answer(const Circles& world, std::uint64_t) override { return mistaken_step(world, m_); }
-  std::string name() const override { return "the gallery entry"; }
+  std::string name() const override { return "the gallery entry `" + mistake_ + "`"; }
 
  private:
+  std::string mistake_;
   Mistakes m_;
 };
 
-// conform's verdict with its default budget, and the report.
-int verdict(Mistakes m, std::string& report) {
-  Gallery candidate(m);
-  std::ostringstream out;
-  ConformOptions options;  // the defaults: 1000 cases, one step, level exact
-  options.seed = 1;
-  const int status = conform(candidate, options, out);
-  report = out.str();
-  return status;
-}
-
-TEST(gallery, the_step_with_no_mistake_conforms) {
-  std::string report;
-  EXPECT_EQ(verdict(Mistakes{}, report), 0) << report;
-}
-
-TEST(gallery, every_wrong_implementation_is_rejected_by_the_default_budget) {
+// Every entry of the gallery: a mistake and the knob that makes it.
+const std::vector<std::pair<std::string, Mistakes>>& gallery() {
   using C = Mistakes::Contact;
   using H = Mistakes::Choice;
-  const std::vector<std::pair<std::string, Mistakes>> gallery{
+  static const std::vector<std::pair<std::string, Mistakes>> entries{
       {"< instead of <= in (3)", {.contact = C::strict}},
       {"hypot distance in doubles", {.contact = C::hypot}},
       {"a grid whose cells are too small", {.contact = C::small_grid}},
@@ -143,12 +138,72 @@ TEST(gallery, every_wrong_implementation_is_rejected_by_the_default_budget) {
       {"identity by value instead of by index", {.identity_by_value = true}},
       {"subnormals flushed to zero", {.flush_subnormals = true}},
   };
-  for (const auto& [mistake, m] : gallery) {
+  return entries;
+}
+
+// conform's verdict with its default budget, and the report; counterexamples are saved in `save` if given.
+int verdict(const std::string& mistake, Mistakes m, std::string& report, const std::filesystem::path& save = {}) {
+  Gallery candidate(mistake, m);
+  std::ostringstream out;
+  ConformOptions options;  // the defaults: 1000 cases, one step, level exact, resolved profile
+  options.seed = 1;
+  options.save = save;
+  const int status = conform(candidate, options, out);
+  report = out.str();
+  return status;
+}
+
+TEST(gallery, the_step_with_no_mistake_conforms) {
+  std::string report;
+  EXPECT_EQ(verdict("none", Mistakes{}, report), 0) << report;
+}
+
+// Each counterexample is also saved, and the saved world still catches the mistake. With the environment
+// variable CIRCLES_GALLERY_SAVE=DIR the files are kept, entry k's in DIR/k: that is how tests/corpus/conform
+// was made.
+TEST(gallery, every_wrong_implementation_is_rejected_by_the_default_budget) {
+  const char* keep = std::getenv("CIRCLES_GALLERY_SAVE");
+  const std::filesystem::path save =
+      keep ? std::filesystem::path(keep)
+           : std::filesystem::temp_directory_path() / ("circles-gallery-" + std::to_string(::getpid()));
+  for (std::size_t entry = 0; entry < gallery().size(); ++entry) {
+    const auto& [mistake, m] = gallery()[entry];
     std::string report;
-    EXPECT_EQ(verdict(m, report), 1) << mistake << " was not caught:\n" << report;
+    // A directory of its own: a corpus shared with the entries before would catch most mistakes by replay.
+    EXPECT_EQ(verdict(mistake, m, report, save / std::to_string(entry)), 1) << mistake << " was not caught:\n" << report;
     const auto which = report.find("which decision");
     std::printf("[ gallery ] %-55s %s", mistake.c_str(),
                 which == std::string::npos ? "\n" : report.substr(which, report.find('\n', which) - which + 1).c_str());
+    const auto saved = report.find("saved: ");
+    ASSERT_NE(saved, std::string::npos) << report;
+    const std::string file = report.substr(saved + 7, report.find('\n', saved) - saved - 7);
+    std::ifstream in(file);
+    std::stringstream text;
+    text << in.rdbuf();
+    const StoredCounterexample c = from_json(text.str(), file);
+    const auto expected = properties::expected_step(c.world, c.profile);
+    ASSERT_TRUE(std::holds_alternative<Circles>(expected)) << file;
+    EXPECT_TRUE(compare(c.world, std::get<Circles>(expected), mistaken_step(c.world, m), Level{0})) << file;
+  }
+  if (!keep) std::filesystem::remove_all(save);
+}
+
+// The committed corpus (tests/corpus/conform), which CI also replays with `circles conform --save` against our
+// engines: each file names the gallery entry that made it, which its world still catches, and the step with no
+// mistake passes it.
+TEST(gallery, each_committed_counterexample_still_catches_the_mistake_that_made_it) {
+  const auto corpus = load_corpus(std::filesystem::path(CIRCLES_SOURCE_DIR) / "tests" / "corpus" / "conform");
+  EXPECT_GE(corpus.size(), 4u);
+  for (const auto& [file, c] : corpus) {
+    const auto entry = std::find_if(gallery().begin(), gallery().end(), [&](const auto& e) {
+      return c.candidate == "the gallery entry `" + e.first + "`";
+    });
+    ASSERT_NE(entry, gallery().end()) << file << " names " << c.candidate;
+    const auto expected = properties::expected_step(c.world, c.profile);
+    ASSERT_TRUE(std::holds_alternative<Circles>(expected)) << file;
+    EXPECT_TRUE(compare(c.world, std::get<Circles>(expected), mistaken_step(c.world, entry->second), Level{0}))
+        << file << " no longer catches " << entry->first;
+    EXPECT_FALSE(compare(c.world, std::get<Circles>(expected), mistaken_step(c.world, Mistakes{}), Level{0})) << file;
   }
 }
 

@@ -1,0 +1,79 @@
+// Worlds of doubles that reach the spec's boundaries by construction, one generator per family, in two
+// profiles: what `circles conform` and properties/conformance.hpp ask an implementation.
+//
+// A family is a kind of boundary a correct step must get right and a plausible wrong one gets wrong: an exact
+// tangency (≤ against <, distances in doubles), a tie under the lexicographic key (which key, in which order),
+// a subnormal (flushing), and so on. Each family builds its worlds from integers (a scale 2^k, offsets, a
+// Pythagorean triple, a number of ulps) so that every world it draws has its boundary, whatever the seed, and
+// shrinks through those integers towards the simplest world of the family (and by dropping circles).
+// docs/properties.md lists the families and how each is built.
+#pragma once
+
+#include <rapidcheck.h>
+
+#include <array>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace circles::properties {
+
+// A world as the step protocol carries it: [px, py, vx, vy, r] per circle, finite doubles, r >= 0.
+using Circles = std::vector<std::array<double, 5>>;
+
+// resolved: worlds are sequences, circle k's image is circle k, e is the least contact in lexicographic
+//           order; r >= 0 (docs/math.md). Every finite world with r >= 0 is in its domain.
+// literal:  the seed to the letter, only inside its defined domain (see outside_literal_domain).
+enum class Profile { resolved, literal };
+const char* name(Profile profile);  // "resolved", "literal"
+// "resolved" or "literal". Throws std::invalid_argument with a message for --profile.
+Profile parse_profile(std::string_view text);
+
+// Why w is outside the literal profile's domain, or nothing when it is inside: every radius is > 0, no two
+// circles are equal (a world is a set), every circle's S = i(c, W) is empty or has a least element under the
+// product order (6), so that e (8) is defined, and no two circles have equal images (none merge). Decided
+// exactly on the doubles. The message names the circles: "circle 2: e(c, S) (8) has no least element: S
+// holds circles 0 and 1, which (6) does not order".
+std::optional<std::string> outside_literal_domain(const Circles& w);
+
+enum class Family {
+  lattice,             // the property suite's exact worlds (gen::world), rounded: copies, ties, tangencies
+  random_doubles,      // every field from gen::finite_double(): every binade, ±0, subnormals, near DBL_MAX
+  tangency,            // exact tangency in every binade: a scaled Pythagorean triple, translated, r_a + r_b split
+  ulp_nudge,           // a tangency with one coordinate moved by ±1 … 3 ulps: just inside or just outside
+  tie_px,              // two contacts of one circle with equal px
+  tie_p,               // … with equal p
+  tie_p_vx,            // … with equal p and vx
+  tie_p_v,             // … with equal p and v, different r
+  duplicates,          // … exactly equal (resolved only: a set has no duplicates)
+  incomparable,        // two contacts of one circle that the product order (6) does not order
+  mutual_contacts,     // three or more circles all touching each other (mutually tangent, or overlapping)
+  tangent_after_step,  // v = 60·q: two circles apart in w_0 are exactly tangent in w_1
+  square_overflow,     // magnitudes from 2^512 up, where |p_b − p_a|² and (r_a + r_b)² overflow doubles
+  subnormals,          // positions, radii and velocities below 2^-1022
+  cancellation,        // p ≈ −v/60: the exact p + v/60 is tiny next to p, nudged by up to 3 ulps
+  signed_zeros,        // +0 and −0 in every field, equal by value
+  zero_radius,         // r = 0: points on a circle's boundary, coincident points (resolved only)
+};
+
+// A short name, for reports and RC_TAG: "tangency", "tie-p-vx", "square-overflow".
+const char* name(Family family);
+
+// The families a profile draws from, in the order above: all of them for resolved; literal leaves out
+// duplicates and zero_radius, which are outside its domain.
+std::span<const Family> families(Profile profile);
+
+namespace gen {
+
+// A world of `family` in `profile`: at most 8 circles, finite doubles, r >= 0 (r > 0 and inside
+// outside_literal_domain's domain for literal: a drawn world that is not is cut down, circle by circle,
+// until it is). Shrinks by dropping circles, then through the family's integers.
+rc::Gen<Circles> boundary_world(Family family, Profile profile);
+
+// A family of `profile` (uniformly; shrinks towards lattice) and a world of it.
+rc::Gen<std::pair<Family, Circles>> boundary_case(Profile profile);
+
+}  // namespace gen
+}  // namespace circles::properties

@@ -1,0 +1,153 @@
+#include "properties/conformance.hpp"
+
+#include "impl/engine.hpp"
+#include "impl/predicate.hpp"
+#include "spec/oracle.hpp"
+
+#include <rapidcheck.h>
+
+#include <bit>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+namespace circles::properties {
+namespace {
+
+// The distance in units in the last place between two finite doubles: their rank among the doubles, with
+// −0 and +0 one rank (bit patterns of negatives reflected below zero).
+std::uint64_t ulps_between(double a, double b) {
+  const auto rank = [](double x) {
+    const auto i = std::bit_cast<std::int64_t>(x);
+    return i < 0 ? std::numeric_limits<std::int64_t>::min() - i : i;
+  };
+  const std::int64_t ra = rank(a), rb = rank(b);
+  return ra >= rb ? static_cast<std::uint64_t>(ra) - static_cast<std::uint64_t>(rb)
+                  : static_cast<std::uint64_t>(rb) - static_cast<std::uint64_t>(ra);
+}
+
+// Which decision of circle k's step differs: its contacts by (3), exactly, on the input doubles.
+std::string decision(const Circles& in, std::size_t k, const Circles& expected, const Circles& actual) {
+  const auto same_velocity = [](const std::array<double, 5>& a, const std::array<double, 5>& b) {
+    return a[2] == b[2] && a[3] == b[3];
+  };
+  if (same_velocity(expected[k], actual[k])) return "none: the velocity is right, the position is not the nearest double";
+  std::vector<std::size_t> contacts;
+  for (std::size_t j = 0; j < in.size(); ++j)
+    if (j != k && impl::intersect_exact(in[k][0], in[k][1], in[k][4], in[j][0], in[j][1], in[j][4]))
+      contacts.push_back(j);
+  const std::string circle = "circle " + std::to_string(k);
+  if (contacts.empty()) return "intersect (3): " + circle + " touches no circle, yet its velocity changed";
+  if (same_velocity(actual[k], in[k]))
+    return "intersect (3): " + circle + " touches circle " + std::to_string(contacts.front()) +
+           (contacts.size() > 1 ? " and others" : "") + " but kept its own velocity";
+  for (const std::size_t j : contacts)
+    if (same_velocity(actual[k], in[j]))
+      return "the choice of e (8): " + circle + " took the velocity of circle " + std::to_string(j) +
+             ", a contact but not the least one";
+  return "the choice of e (8): " + circle + " took a velocity that none of its contacts has";
+}
+
+std::string hex(double x) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%a", x);
+  return text;
+}
+
+bool finite(const Circles& w) {
+  for (const auto& c : w)
+    for (const double x : c)
+      if (!std::isfinite(x)) return false;
+  return true;
+}
+
+}  // namespace
+
+std::string Level::text() const {
+  if (ulps == 0) return "exact";
+  if (ulps == 1) return "faithful";
+  return "ulps:" + std::to_string(ulps);
+}
+
+Level parse_level(std::string_view text) {
+  if (text == "exact") return Level{0};
+  if (text == "faithful") return Level{1};
+  if (text.starts_with("ulps:")) {
+    std::uint64_t k = 0;
+    const std::string_view digits = text.substr(5);
+    const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), k);
+    if (error == std::errc{} && end == digits.data() + digits.size() && !digits.empty()) return Level{k};
+  }
+  throw std::invalid_argument("--level: \"" + std::string(text) + "\" is not exact, faithful or ulps:K (K an integer)");
+}
+
+const char* field_name(int field) {
+  constexpr const char* names[] = {"px", "py", "vx", "vy", "r"};
+  return field >= 0 && field < 5 ? names[field] : "?";
+}
+
+std::variant<Circles, NoAnswer> expected_step(const Circles& w, Profile profile) {
+  if (profile == Profile::resolved) {
+    // impl::step_all_pairs: the exact step with every pair tested (intersect_exact, advance_rounded), 50-100
+    // times faster than the oracle on small worlds.
+    try {
+      return impl::step_all_pairs(impl::World{w}).circles();
+    } catch (const impl::PositionOverflow&) {
+      return NoAnswer::overflow;
+    }
+  }
+  if (outside_literal_domain(w)) return NoAnswer::outside_literal_domain;
+  // The literal oracle itself: f (4) of each circle in the set W, which inside the domain is defined and
+  // one-to-one, so the image of circle k is answer k.
+  std::vector<spec::Circle> list;
+  list.reserve(w.size());
+  for (std::size_t k = 0; k < w.size(); ++k) list.push_back(spec::from_doubles(w[k], k, spec::Radii::positive));
+  const spec::LiteralWorld W = spec::literal_world(list);
+  Circles out;
+  out.reserve(w.size());
+  for (const spec::Circle& c : list) {
+    const std::optional<spec::Circle> image = spec::f(c, W);
+    if (!image) throw std::logic_error("expected_step: (8) undefined inside the literal domain, which cannot happen");
+    out.push_back(spec::nearest_doubles(*image));
+  }
+  if (!finite(out)) return NoAnswer::overflow;
+  return out;
+}
+
+std::optional<Difference> compare(const Circles& input, const Circles& expected, const Circles& actual, Level level) {
+  for (std::size_t k = 0; k < expected.size(); ++k)
+    for (int f = 0; f < 5; ++f) {
+      const double e = expected[k][static_cast<std::size_t>(f)], a = actual[k][static_cast<std::size_t>(f)];
+      // Velocities and radii are copied, never computed: exact at every level. Positions within the level.
+      const bool position = f < 2;
+      const bool equal = position ? std::isfinite(a) && ulps_between(e, a) <= level.ulps : e == a;
+      if (!equal) return Difference{k, f, e, a, decision(input, k, expected, actual)};
+    }
+  return std::nullopt;
+}
+
+void step_conforms(const Step& step, const Options& options) {
+  const auto [family, w_0] = *gen::boundary_case(options.profile);
+  RC_TAG(name(family));
+  Circles now = w_0;
+  for (std::uint64_t n = 1; n <= options.steps; ++n) {
+    const auto expected = expected_step(now, options.profile);
+    if (!std::holds_alternative<Circles>(expected)) return;
+    const Circles actual = step(now);
+    if (actual.size() != now.size())
+      RC_FAIL("step " + std::to_string(n) + ": asked " + std::to_string(now.size()) + " circles, answered " +
+              std::to_string(actual.size()));
+    if (const auto d = compare(now, std::get<Circles>(expected), actual, options.level)) {
+      RC_LOG() << "family " << name(family) << ", step " << n << " of " << options.steps << ", "
+               << name(options.profile) << " profile, level " << options.level.text() << "\n";
+      RC_FAIL("circle " + std::to_string(d->circle) + ", field " + field_name(d->field) + ": expected " +
+              hex(d->expected) + ", got " + hex(d->actual) + "; which decision: " + d->decision);
+    }
+    now = actual;
+  }
+}
+
+}  // namespace circles::properties

@@ -1,0 +1,80 @@
+#!/bin/sh
+# End-to-end checks of `circles conform`'s profiles, corpus and pictures (tests/CMakeLists.txt runs one case per
+# test):
+#   conform_end_to_end.sh PATH/TO/circles SOURCE_DIR CASE
+# Each case exits 0 when the program behaves as docs/conform.md says, and names what differs otherwise.
+set -eu
+circles=$1
+source_dir=$2
+case_name=$3
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+
+fail() {
+  echo "FAIL: $*" >&2
+  exit 1
+}
+
+# run_conform WANT ARGS...: runs `circles conform ARGS`, stdout to $dir/out, stderr to $dir/err; it must exit
+# with WANT.
+run_conform() {
+  want=$1
+  shift
+  set +e
+  "$circles" conform "$@" >"$dir/out" 2>"$dir/err"
+  got=$?
+  set -e
+  [ "$got" -eq "$want" ] || fail "conform $* exited $got, expected $want: $(cat "$dir/out" "$dir/err")"
+}
+
+naive="python3 $source_dir/examples/python/step_naive.py"
+
+case $case_name in
+literal_profile_accepts_the_exact_python_example)
+  run_conform 0 --profile literal --cases 300 --seed 1 --exec "python3 $source_dir/examples/python/step.py"
+  grep -q "conforms: 300 cases" "$dir/out" || fail "no verdict: $(cat "$dir/out")"
+  grep -q "literal profile" "$dir/out" || fail "the profile is not named: $(cat "$dir/out")"
+  ;;
+exits_2_naming_an_unknown_profile)
+  run_conform 2 --profile sideways
+  [ "$(cat "$dir/err")" = 'circles conform: --profile: "sideways" is not resolved or literal' ] ||
+    fail "unexpected message: $(cat "$dir/err")"
+  ;;
+exits_2_when_too_few_cases_reach_every_family)
+  run_conform 2 --cases 5 --seed 1
+  [ "$(cat "$dir/err")" = "circles conform: no case of the family tie-p was checked: each round of 17 cases \
+draws every family of the resolved profile once, and this run checked 5; raise --cases to at least 17" ] ||
+    fail "unexpected message: $(cat "$dir/err")"
+  ;;
+saves_a_counterexample_and_replays_it_first)
+  run_conform 1 --seed 3 --save "$dir/corpus" --exec "$naive"
+  [ "$(ls "$dir/corpus"/*.json | wc -l)" -eq 1 ] || fail "not one counterexample saved: $(ls "$dir/corpus")"
+  [ "$(ls "$dir/corpus"/*.svg | wc -l)" -eq 1 ] || fail "no picture beside it: $(ls "$dir/corpus")"
+  saved=$(ls "$dir/corpus"/*.json)
+  grep -q "^saved: $saved\$" "$dir/out" || fail "the report does not name $saved: $(cat "$dir/out")"
+  run_conform 1 --seed 4 --cases 0 --save "$dir/corpus" --exec "$naive"
+  grep -q "^counterexample: stored in $saved, replayed first" "$dir/out" || fail "not replayed: $(cat "$dir/out")"
+  run_conform 0 --seed 4 --save "$dir/corpus" --exec "python3 $source_dir/examples/python/step.py"
+  grep -q "corpus: 1 stored counterexample replayed from $dir/corpus" "$dir/out" || fail "$(cat "$dir/out")"
+  ;;
+draws_the_picture_where_svg_says)
+  run_conform 1 --seed 3 --svg "$dir/picture.svg" --exec "$naive"
+  grep -q "^picture: $dir/picture.svg\$" "$dir/out" || fail "the report does not name the picture: $(cat "$dir/out")"
+  head -c 5 "$dir/picture.svg" | grep -q '<?xml' || fail "not an SVG document"
+  grep -q '<svg ' "$dir/picture.svg" || fail "not an SVG document"
+  run_conform 2 --seed 3 --svg "$dir/no/such/picture.svg" --exec "$naive"
+  [ "$(cat "$dir/err")" = "circles conform: --svg: cannot write $dir/no/such/picture.svg: the directory $dir/no/such \
+does not exist" ] || fail "unexpected message: $(cat "$dir/err")"
+  ;;
+replays_the_committed_corpus_with_each_engine)
+  # A copy, so that a failure writes its picture there rather than into the source tree.
+  cp -r "$source_dir/tests/corpus/conform" "$dir/corpus"
+  for engine in double exact; do
+    run_conform 0 --engine "$engine" --cases 0 --save "$dir/corpus"
+    grep -Eq "corpus: [0-9]+ stored counterexamples replayed from" "$dir/out" || fail "$engine: $(cat "$dir/out")"
+  done
+  ;;
+*)
+  fail "no such case: $case_name"
+  ;;
+esac
