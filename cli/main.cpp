@@ -1,14 +1,18 @@
 // The `circles` program. With no subcommand it runs the main job on the embedded default scene: the oracle's
 // report, then every engine checked against the correctly rounded oracle step by step.
 #include "cli/candidate.hpp"
+#include "cli/check_trace.hpp"
 #include "cli/conform.hpp"
 #include "cli/engines.hpp"
 #include "cli/oracle_report.hpp"
 #include "cli/run.hpp"
 #include "cli/scene.hpp"
 #include "cli/serve.hpp"
+#include "cli/vectors.hpp"
 
 #include <CLI/CLI.hpp>
+
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdint>
@@ -44,6 +48,26 @@ void add_engine_options(CLI::App* command, std::string& engine_name, unsigned& t
       ->check(CLI::Range(0u, max_threads()));
 }
 
+// --random N --coverage C --seed S: the benchmarks' random scene (impl/random_scene.hpp) instead of a scene file.
+struct RandomOptions {
+  std::size_t circles = 0;  // 0: no random scene
+  double coverage = 0.1;    // the benchmarks' coverage of the targets
+  std::uint64_t seed = 1;   // the benchmarks' seed
+};
+
+void add_random_options(CLI::App* command, CLI::Option* scene, RandomOptions& random) {
+  // Up to 2^63 - 1, which refuses "-5" (read as 2^64 - 5); a count beyond memory is refused with its bytes.
+  CLI::Option* n = command
+                       ->add_option("--random", random.circles,
+                                    "Instead of a scene file, N random circles like the benchmarks' (r 2-6, |v| <= 100)")
+                       ->check(CLI::Range(std::size_t{1}, std::size_t{std::numeric_limits<std::int64_t>::max()}))
+                       ->excludes(scene);
+  command->add_option("--coverage", random.coverage, "With --random: the circles' area over their square's, in (0, 1]")
+      ->capture_default_str()
+      ->needs(n);
+  command->add_option("--seed", random.seed, "With --random: the seed")->capture_default_str()->needs(n);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -52,11 +76,17 @@ int main(int argc, char** argv) {
 
   std::string scene_path;
   std::size_t steps = 100;
+  constexpr std::size_t kMaxOracleSteps = 1000000;
+  RandomOptions random_options;
   CLI::App* oracle = app.add_subcommand(
       "oracle", "Run the exact oracle in both profiles on a scene and report what it did (the default)");
-  oracle->add_option("scene", scene_path, "Scene file in compact form {\"circles\": [[px, py, vx, vy, r], ...]}")
-      ->check(CLI::ExistingFile);
-  oracle->add_option("--steps", steps, "Number of steps")->capture_default_str()->check(CLI::Range(0, 1000000));
+  CLI::Option* oracle_scene =
+      oracle->add_option("scene", scene_path, "Scene file (docs/scenes.md; default: the embedded default scene)")
+          ->check(CLI::ExistingFile);
+  oracle->add_option("--steps", steps, "Number of steps (default: the scene's \"steps\", else 100)")
+      ->capture_default_str()
+      ->check(CLI::Range(std::size_t{0}, kMaxOracleSteps));
+  add_random_options(oracle, oracle_scene, random_options);
 
   std::string engine_name = "double";
   unsigned threads = 0;
@@ -66,18 +96,31 @@ int main(int argc, char** argv) {
 
   std::uint64_t run_steps = 100;
   std::string trace;
-  CLI::App* run = app.add_subcommand("run", "Run an engine on a scene, optionally writing a JSON Lines trace");
-  run->add_option("scene", scene_path, "Scene file in compact form (default: the embedded default scene)")
-      ->check(CLI::ExistingFile);
+  CLI::App* run = app.add_subcommand(
+      "run", "Run an engine on a scene, optionally writing a JSON Lines trace, PNG frames or a video (docs/run.md)");
+  CLI::Option* run_scene =
+      run->add_option("scene", scene_path, "Scene file (docs/scenes.md; default: the embedded default scene)")
+          ->check(CLI::ExistingFile);
   // Up to 2^63 - 1: CLI11 reads "-5" as 2^64 - 5 (strtoull), which this range refuses.
-  run->add_option("--steps", run_steps, "Number of steps")
+  run->add_option("--steps", run_steps, "Number of steps (default: the scene's \"steps\", else 100)")
       ->capture_default_str()
-      ->check(CLI::Range(std::uint64_t{0}, std::uint64_t{std::numeric_limits<std::int64_t>::max()}));
+      ->check(CLI::Range(std::uint64_t{0}, kMaxSceneSteps));
+  add_random_options(run, run_scene, random_options);
   add_engine_options(run, engine_name, threads);
   run->add_option("--trace", trace,
                   "Write every world to this file, one JSON line {\"step\": t, \"circles\": [...]} each");
+  std::string render_dir, video;
+  std::uint64_t every = 1;
+  bool fit = false, stats = false;
+  run->add_option("--render", render_dir, "Draw frames as 1280x720 PNGs DIR/frame-000000.png, ... (DIR created if missing)");
+  run->add_option("--every", every, "A frame every K steps: w_0, w_K, w_2K, ... (for --render and --video)")
+      ->capture_default_str()
+      ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{std::numeric_limits<std::int64_t>::max()}));
+  run->add_option("--video", video, "Pipe the frames to ffmpeg for an H.264 video FILE.mp4 at 60 frames/s");
+  run->add_flag("--fit", fit, "Scale and centre the frames to hold every circle of every frame (default: 1 unit = 1 pixel)");
+  run->add_flag("--stats", stats, "Also print the run's figures: steps, circles, engine, threads, times, ns per circle-step");
 
-  std::string exec, level = "exact", shard = "0/1";
+  std::string exec, level = "exact", shard = "0/1", profile = "resolved", save_dir, svg_file;
   circles::cli::ConformOptions conform_options;
   conform_options.seed = std::random_device{}();
   double timeout = 10;
@@ -93,12 +136,49 @@ int main(int argc, char** argv) {
   conform->add_option("--steps", conform_options.steps, "Steps chained per world, the candidate fed its own answers")
       ->capture_default_str()
       ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1000000}));
-  conform->add_option("--shard", shard, "Check only the cases c with c mod n == i, for parallel jobs")
+  conform->add_option("--profile", profile,
+                       "resolved, or literal (only worlds where the seed's step is defined, checked against it)")
       ->capture_default_str();
+  conform->add_option("--shard", shard,
+                      "Check only the rounds q (of one case per family) with q mod n == i, for parallel jobs")
+      ->capture_default_str();
+  conform->add_option("--save", save_dir,
+                      "Replay every counterexample stored in DIR first, and store a new one there (with its picture)");
+  conform->add_option("--svg", svg_file,
+                      "Draw a counterexample's picture in FILE (default: beside it in --save DIR, else in the "
+                      "temporary directory)");
   conform->add_option("--timeout", timeout, "Seconds to wait for each answer")
       ->capture_default_str()
       ->check(CLI::Range(0.001, 3600.0));
   CLI::Option* case_option = conform->add_option("--case", only_case, "Check only this case (to replay a counterexample)");
+
+  circles::cli::VectorsOptions vectors_options;
+  CLI::App* vectors = app.add_subcommand(
+      "vectors", "Write golden test vectors for other languages to DIR/vectors.jsonl (docs/vectors.md)");
+  vectors->add_option("--out", vectors_options.out, "The directory of vectors.jsonl (created if missing)")->required();
+  // Ranges as for --steps: CLI11 reads "-5" as 2^64 - 5, which they refuse.
+  vectors->add_option("--cases", vectors_options.cases, "Generated worlds: conform's cases 0 to N-1 of the seed")
+      ->capture_default_str()
+      ->check(CLI::Range(std::uint64_t{0}, std::uint64_t{1000000}));
+  vectors->add_option("--seed", vectors_options.seed, "Seed of the generated worlds")->capture_default_str();
+  vectors->add_option("--scenes", vectors_options.scenes, "Directory of scenes (*.json) whose first worlds are cases")
+      ->capture_default_str();
+  vectors->add_option("--scene-steps", vectors_options.scene_steps, "Worlds w_0, w_1, ... taken from each scene")
+      ->capture_default_str()
+      ->check(CLI::Range(std::uint64_t{0}, std::uint64_t{1000000}));
+
+  std::string trace_file, trace_engine = "double";
+  CLI::App* check_trace = app.add_subcommand(
+      "check-trace", "Check a trace recorded by any implementation step by step against the spec (docs/vectors.md)");
+  // No CLI::ExistingFile: a missing file is reported by the trace reader, as every other bad trace is.
+  check_trace->add_option("trace", trace_file, "The trace: JSON Lines, one {\"step\": t, \"circles\": [...]} per world")
+      ->required();
+  check_trace
+      ->add_option("--engine", trace_engine,
+                   "double: each world the correctly rounded step of the one before; exact: the oracle's exact "
+                   "sequence from the first world, rounded")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"double", "exact"}));
 
   try {
     app.parse(argc, argv);
@@ -112,9 +192,13 @@ int main(int argc, char** argv) {
       std::ios::sync_with_stdio(false);  // serve reads and writes only through the C++ streams
       return circles::cli::serve(engine(engine_name), threads, std::cin, std::cout, std::cerr);
     }
+    if (*vectors) return circles::cli::vectors_command(vectors_options, std::cout, std::cerr);
+    if (*check_trace)
+      return check_trace_command(trace_file, trace_reference(trace_engine), std::cout, std::cerr);
     if (*conform) {
       try {
         conform_options.level = circles::cli::parse_level(level);
+        conform_options.profile = circles::properties::parse_profile(profile);
         std::tie(conform_options.shard, conform_options.shards) = circles::cli::parse_shard(shard);
       } catch (const std::invalid_argument& e) {
         std::cerr << "circles conform: " << e.what() << "\n";
@@ -125,6 +209,9 @@ int main(int argc, char** argv) {
         return 2;
       }
       if (*case_option) conform_options.only_case = only_case;
+      conform_options.save = save_dir;
+      conform_options.svg = svg_file;
+      conform_options.picture_in_temp = true;
       try {
         std::unique_ptr<Candidate> candidate;
         if (exec.empty())
@@ -136,25 +223,60 @@ int main(int argc, char** argv) {
       } catch (const BrokenCandidate& e) {
         std::cerr << "circles conform: " << e.what() << "\n";
         return 2;
+      } catch (const ConformError& e) {
+        std::cerr << "circles conform: " << e.what() << "\n";
+        return 2;
       }
     }
-    const bool from_file = !scene_path.empty();
-    const auto scene = from_file ? load_scene(scene_path) : default_scene();
-    const std::string scene_name = from_file ? scene_path : "the embedded default scene";
+    const bool from_file = !scene_path.empty(), random = random_options.circles > 0;
+    const auto& [n, coverage, seed] = random_options;
+    // A random world for `run` stays in doubles (random_world below): its exact circles would take ten times the
+    // memory, and the engines step doubles.
+    const Scene scene = random ? (*run ? Scene{} : random_scene(n, coverage, seed, kOracleBytesPerCircle))
+                        : from_file ? load_scene(scene_path)
+                                    : default_scene();
+    const std::string scene_name = random      ? random_scene_name(n, coverage, seed)
+                                   : from_file ? scene_path
+                                               : "the embedded default scene";
 
     if (*run) {
-      const RunOptions options{run_steps, &engine(engine_name), threads, trace};
-      const RunResult result = circles::cli::run(doubles_of(scene), options);
+      if ((fit || run->count("--every") > 0) && render_dir.empty() && video.empty()) {
+        std::cerr << "circles run: --fit and --every shape the frames of --render and --video, and neither is given\n";
+        return 2;
+      }
+      RunOptions options{run_steps, &engine(engine_name), threads, trace};
+      options.render = render_dir;
+      options.every = every;
+      options.video = video;
+      options.fit = fit;
+      // The progress bar only on a terminal: output to a pipe, a file or CI stays free of it.
+      if (isatty(STDERR_FILENO)) options.progress = &std::cerr;
+      if (run->count("--steps") == 0 && scene.steps) options.steps = *scene.steps;
+      const Circles world = random ? random_world(n, coverage, seed, run_bytes_per_circle(engine_name)) : doubles_of(scene);
+      const RunResult result = circles::cli::run(world, options);
       std::cout << "circles run: " << scene_name << ": ";
-      print_summary(result, scene.size(), options, std::cout);
+      print_summary(result, world.size(), options, std::cout);
+      if (stats) print_stats(result, world.size(), options, std::cout);
       if (!result.overflow) return 0;
       std::cerr << "circles run: " << result.overflow->what() << "; stopped after " << result.steps << " steps";
       if (!trace.empty()) std::cerr << ", and the trace " << trace << " holds w_0 to w_" << result.steps;
+      if (!render_dir.empty() || !video.empty())
+        std::cerr << (trace.empty() ? ", and " : "; ") << "the frames"
+                  << (video.empty() ? "" : " of " + video) << (render_dir.empty() ? "" : " in " + render_dir)
+                  << " go to w_" << result.steps / every * every;
       std::cerr << "\n";
       return 2;
     }
 
-    report_oracle(scene, scene_name, steps, std::cout);
+    if (*oracle && oracle->count("--steps") == 0 && scene.steps) {
+      if (*scene.steps > kMaxOracleSteps) {
+        std::cerr << "circles oracle: " << scene_name << ": \"steps\": " << *scene.steps << " is more than the "
+                  << kMaxOracleSteps << " steps the oracle takes; give --steps\n";
+        return 2;
+      }
+      steps = *scene.steps;
+    }
+    report_oracle(scene.circles, scene_name, steps, std::cout);
     if (*oracle) return 0;
     // The main job: every engine against the correctly rounded oracle, on the same scene and steps.
     std::cout << "\nthe engines, each stepped beside the oracle (a rounding engine against the correctly rounded step "
@@ -172,6 +294,15 @@ int main(int argc, char** argv) {
     return 2;
   } catch (const TraceError& e) {
     std::cerr << "circles: " << e.what() << "\n";
+    return 2;
+  } catch (const std::bad_alloc&) {
+    // A world too large for memory that got past the checks (a huge scene file, or --random N near the limit).
+    const std::size_t n = random_options.circles, per_circle = *oracle ? kOracleBytesPerCircle : run_bytes_per_circle(engine_name);
+    if (n > 0 && n <= std::numeric_limits<std::size_t>::max() / per_circle)
+      std::cerr << "circles: world too large for memory: " << n << " circles need about " << n * per_circle
+                << " bytes, and an allocation failed\n";
+    else
+      std::cerr << "circles: out of memory: an allocation failed\n";
     return 2;
   }
 }

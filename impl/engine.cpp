@@ -373,6 +373,9 @@ std::vector<CandidatePair> BasicEngine<A>::candidates() const {
 
 template class BasicEngine<ExactArithmetic>;
 template class BasicEngine<NaiveArithmetic>;
+template class BasicEngine<NaiveSqrtArithmetic>;
+template class BasicEngine<FloatNaiveArithmetic>;
+template class BasicEngine<ExactDecisionArithmetic>;
 
 // ── The all-pairs reference ───────────────────────────────────────────────────────────────────────────
 

@@ -141,6 +141,10 @@ using Engine = BasicEngine<ExactArithmetic>;
 using NaiveEngine = BasicEngine<NaiveArithmetic>;
 extern template class BasicEngine<ExactArithmetic>;
 extern template class BasicEngine<NaiveArithmetic>;
+// The accuracy benchmark's baselines (impl/arithmetic.hpp, docs/accuracy.md); not conformant.
+extern template class BasicEngine<NaiveSqrtArithmetic>;
+extern template class BasicEngine<FloatNaiveArithmetic>;
+extern template class BasicEngine<ExactDecisionArithmetic>;
 
 // The reference engine for tests: the exact step with every pair tested (no broad phase). O(n²).
 // Throws PositionOverflow (step 1) like Engine::step.
