@@ -1,5 +1,8 @@
 // The engines' cost per circle-step (issue 3, point 5) and, in the same run, what it is measured against:
-// the same engine with naive arithmetic, all-pairs steps, a plain uniform grid, and the streaming floor.
+// the same engine with naive arithmetic, all-pairs steps, a plain uniform grid, and the streaming floor; and
+// the exact engine (impl::ExactEngine, family exact_engine) at 10% coverage, for issue 4's target, also on the
+// scene rounded to multiples of 2^-20 (families *_coarse, both engines), which the exact engine holds in
+// 64-bit integers.
 // Every scene is impl::random_scene(n, coverage, kSceneSeed); bench/harness.hpp says how steps are timed.
 // scripts/benchmarks runs this program and writes docs/benchmarks.md from its JSON output.
 //
@@ -8,6 +11,7 @@
 #include "bench/baselines.hpp"
 #include "bench/harness.hpp"
 #include "impl/engine.hpp"
+#include "impl/exact_engine.hpp"
 #include "impl/random_scene.hpp"
 
 #include <benchmark/benchmark.h>
@@ -42,11 +46,23 @@ std::vector<std::pair<std::string, double>> labels(double coverage, unsigned thr
 // The scene of a configuration (each copy makes its own: at most 100 copies of 10^3 circles, untimed).
 Circles scene(std::size_t n, double coverage) { return impl::random_scene(n, coverage, kSceneSeed); }
 
+// The same scene with every value rounded to a multiple of 2^-20. Its common denominator is then at most
+// D = 60·2^20 and every scaled position D·p below 2^41 (the side is 23,337 at 10^6 circles), so the exact
+// engine holds it in 64-bit integers; the random scene's values need 2^-51 and finer (its radii 2 + 4u alone),
+// which takes 128 (docs/exact-engine.md).
+Circles coarse_scene(std::size_t n, double coverage) {
+  Circles w = scene(n, coverage);
+  for (auto& c : w)
+    for (double& x : c) x = std::round(x * 0x1p20) * 0x1p-20;
+  return w;
+}
+
 template <class EngineType>
-void register_engine(const std::string& family, std::size_t n, double coverage, unsigned threads) {
+void register_engine(const std::string& family, std::size_t n, double coverage, unsigned threads,
+                     Circles (*make_scene)(std::size_t, double) = scene) {
   register_steps(name(family, coverage, threads, n), n, copies_for(n, kStepsPerStepper), kStepsPerStepper,
-                 [n, coverage, threads] {
-                   return std::make_unique<EngineType>(impl::World(scene(n, coverage)),
+                 [n, coverage, threads, make_scene] {
+                   return std::make_unique<EngineType>(impl::World(make_scene(n, coverage)),
                                                    impl::EngineOptions{.threads = threads});
                  },
                  labels(coverage, threads));
@@ -72,6 +88,9 @@ void register_all() {
     for (const double coverage : kCoverages)
       for (const unsigned threads : kThreadCounts) register_engine<impl::Engine>("engine_exact", n, coverage, threads);
     register_engine<impl::NaiveEngine>("engine_naive", n, kTargetCoverage, 1);
+    for (const unsigned threads : kThreadCounts) register_engine<impl::ExactEngine>("exact_engine", n, kTargetCoverage, threads);
+    register_engine<impl::Engine>("engine_exact_coarse", n, kTargetCoverage, 1, coarse_scene);
+    register_engine<impl::ExactEngine>("exact_engine_coarse", n, kTargetCoverage, 1, coarse_scene);
     register_baseline<UniformGrid>("uniform_grid", n, copies_for(n, kStepsPerStepper), kStepsPerStepper,
                                    kTargetCoverage);
     register_baseline<StreamingFloor>("streaming_floor", n, copies_for(n, kStepsPerStepper), kStepsPerStepper,

@@ -7,10 +7,12 @@
 // Velocities are only ever copied (h of (9)), so every position is p0 + (a sum of input velocities)/60. With
 // L the least common multiple of the inputs' denominators (2^K for doubles, K fixed by the scene's least
 // exponent) and D = 60·L, the engine holds X = D·p, V = L·v and R = D·r, all integers; a step is X ← X + V of
-// the least contact. Intersect (3) is R_a + R_b ≥ |X_b − X_a| in integers, and the order of (7) compares the
-// integers (D, L > 0 keep the order). The width is chosen per scene: __int128 while every magnitude stays
-// within 2^125 (proven ahead for a number of steps, from max |V|), GMP integers otherwise.
-// docs/exact-engine.md has the representation, the bound, the rounding and the broad phase's boxes.
+// the least contact. Intersect (3) is R_a + R_b ≥ |X_b − X_a| in integers, after a filter on the broad phase's
+// double approximations that decides all but near-tangent pairs; the order of (7) compares the integers (D,
+// L > 0 keep the order). The width is chosen per scene and re-proven ahead for a number of steps (from max |V|):
+// 64 bits while every magnitude stays within 2^61, __int128 within 2^125, GMP integers otherwise. Like the
+// double engine, the circles are kept in cell order (slots), with the same broad phase and threads.
+// docs/exact-engine.md has the representation, the bounds, the rounding and the broad phase's boxes.
 #pragma once
 
 #include "impl/broad_phase.hpp"
@@ -50,50 +52,92 @@ class ExactEngine {
 
   std::uint64_t steps() const noexcept { return steps_; }
   unsigned threads() const noexcept { return threads_; }
-  std::size_t size() const noexcept { return r_upper_.size(); }
-  // True while the state is held in __int128, false once (or if from the start) it needs GMP integers.
-  bool narrow() const noexcept { return state_.index() == 0; }
+  std::size_t size() const noexcept { return radius_.size(); }
+  // The integers' width: 64 or 128 (fixed, proven to hold the state until the next proof), 0 for GMP.
+  unsigned width() const noexcept;
+  // True while the state is held in fixed-width integers (64 or 128 bits), false once (or if from the start)
+  // it needs GMP integers.
+  bool narrow() const noexcept { return width() != 0; }
   // D = 60·L, the common denominator of positions and radii (velocities have L).
   const exact::Wide& denominator() const noexcept { return den_; }
 
   static constexpr unsigned kMaxThreads = BasicEngine<ExactArithmetic>::kMaxThreads;
 
  private:
+  // The integers of the state. Positions and velocities by slot (cell order, slot t holds circle id_[t]), as
+  // the double engine keeps its doubles; radii never change and are read only by exact decisions and ties of
+  // the order, so they stay by circle index. The next_ arrays are a step's scratch: the new velocities, then
+  // the gather's targets.
   template <class Int>
-  struct Columns {  // circle k at index k; next_vx, next_vy are a step's scratch
-    std::vector<Int> x, y, vx, vy, r, next_vx, next_vy;
+  struct Columns {
+    std::vector<Int> x, y, vx, vy, r, next_x, next_y, next_vx, next_vy;
   };
-
-  // The same integers in another width (Narrow only for values below 2^127).
+  // By slot, the broad phase's doubles: circle id_[t]'s centre is within e of (x[t], y[t]) on each axis and
+  // its radius within e of rho[t], for e = error(x[t], y[t], id_[t]) ≤ error_bound_; box[t] ≥ rho[t] + e is
+  // the half-width of a box that holds the exact one.
+  struct Approximations {
+    std::vector<double> x, y, rho, box;
+  };
+  // A bound on the errors of the approximations (x, y) and ρ of `circle`.
+  double error(double x, double y, std::uint32_t circle) const noexcept;
+  // The approximations of one circle from its integers (exact::approximate) and ρ; returns their error bound.
+  template <class Int>
+  double approximate(const Int& x, const Int& y, double rho, std::uint32_t circle, double& ax, double& ay,
+                     double& box) const noexcept;
+  // The same integers in another width (each value must fit).
   template <class To, class From>
   static Columns<To> converted(const Columns<From>& s);
+
+  // The constructors' work: from rationals, the denominators, the scaled integers in GMP and the radii's
+  // doubles; then start with the state by circle index (slot k holds circle k), the width and the layout.
+  void from_rationals(const spec::Sequence& circles);
+  template <class Int>
+  void start(Columns<Int> s, std::vector<double> radius, std::vector<double> radius_error);
+  // The narrowest width that holds the state for at least one more step, and until which step (re-run then).
+  void choose_width();
   template <class Int>
   void step_with(Columns<Int>& s);
   template <class Int>
-  void locate(const Columns<Int>& s);
+  bool precedes(const Columns<Int>& s, std::size_t a, std::size_t b) const noexcept;
+  // Intersect (3) of slots i and j on the integers, for the pairs the filter leaves; out of line, so that the
+  // filter inlines into the broad phase's loop.
+  template <class Int>
+  [[gnu::noinline]] bool intersect_exactly(const Columns<Int>& s, std::size_t i, std::size_t j) const;
   template <class Int>
   void check_overflow(const Columns<Int>& s) const;
-  void prove_narrow_headroom();
+  // The keys of every slot (next_key_) from its approximations, and a new grid when circles left it. With
+  // Advance, first each slot's move X ← X + V, with V the velocity of the slot's least contact when
+  // from_least (else its own: the velocities are new already).
+  template <bool Advance, class Int>
+  void locate(Columns<Int>& s, bool from_least);
+  // The slots in cell order again (their velocities taken from their least contacts when from_least), and
+  // their approximations.
+  template <class Int>
+  void commit(Columns<Int>& s, bool from_least);
 
   EngineOptions options_;
   unsigned threads_ = 1;
   std::uint64_t steps_ = 0;
-  std::variant<Columns<exact::Narrow>, Columns<exact::Wide>> state_;
+  std::variant<Columns<exact::Word>, Columns<exact::Narrow>, Columns<exact::Wide>> state_;
   exact::Wide den_, den_v_;  // D = 60·L and L
   exact::Wide overflow_at_;  // (2^1024 − 2^970)·D: |X| at least this rounds to ±infinity
-  exact::NarrowMagnitude narrow_den_ = 1, narrow_den_v_ = 1;  // D and L, while narrow
-  double inverse_den_ = 1;                                    // RN(1/D), while narrow
-  std::uint64_t narrow_until_ = 0;  // the narrow state is proven to fit through this step
-  std::vector<double> r_upper_;     // a double ≥ the exact radius, per circle
+  exact::NarrowMagnitude narrow_den_ = 1, narrow_den_v_ = 1;  // D and L, while fixed-width
+  double inverse_den_ = 1;                                    // RN(1/D), while fixed-width
+  std::uint64_t proven_until_ = 0;  // the fixed-width state is proven to fit through this step
+  // Per circle (by index): ρ, the nearest double of the radius, and a bound on |ρ − r| (0 for a double input).
+  std::vector<double> radius_, radius_error_;
+  bool radii_exact_ = true;  // every radius_error_ is 0
 
-  // The broad phase over double boxes that contain the exact ones, slots in cell order: slot t holds
-  // circle id_[t] with approximate centre (ax_, ay_) and inflated radius ar_ (see locate).
+  // The broad phase over double boxes that contain the exact ones, slots in cell order (slot t holds circle
+  // id_[t]); next_rho_ and next_id_ are the gather's targets.
   CellGrid grid_;
   bool planned_ = false;
   CellOrder order_;
-  std::vector<std::uint32_t> id_, permutation_, least_;
+  Approximations approx_;
+  double error_bound_ = 0;  // the largest error bound over the slots (commit)
+  std::vector<double> next_rho_;
+  std::vector<std::uint32_t> id_, next_id_, permutation_, least_;
   std::vector<CellKey> key_, next_key_;
-  std::vector<double> ax_, ay_, ar_;
   std::vector<unsigned> levels_;
   std::array<std::size_t, CellGrid::kLevels + 1> level_begin_{};
   std::vector<std::vector<ContactOffer>> offers_;

@@ -80,7 +80,7 @@ bool intersect_scaled(Narrow s, Narrow dx, Narrow dy) noexcept {
   const NarrowMagnitude ms = magnitude(s), mx = magnitude(dx), my = magnitude(dy);
   if (mx > ms || my > ms) return false;
   // Each conversion is RN, within a relative 2^-53 ≤ 2^-52; magnitudes below 2^126 < 2^500.
-  const int filtered = intersect_filter(static_cast<double>(s), static_cast<double>(dx), static_cast<double>(dy));
+  const int filtered = intersect_filter(to_double(s), to_double(dx), to_double(dy));
   if (filtered >= 0) return filtered == 1;
   const U256 left = square(ms), right = add(square(mx), square(my));
   return std::tie(left.hi, left.lo) >= std::tie(right.hi, right.lo);

@@ -171,11 +171,35 @@ TEST(exact_engine, follows_the_oracle_on_the_bundled_scene_and_runs_it_for_10000
 
 // ── Width ─────────────────────────────────────────────────────────────────────────────────────────────
 
-TEST(exact_engine, holds_a_small_scene_in_128_bits_over_the_denominator_60_times_2_to_the_k) {
+TEST(exact_engine, holds_a_small_scene_in_64_bits_over_the_denominator_60_times_2_to_the_k) {
   // 0.375 = 3·2^-3 is the least exponent: K = 3, D = 60·8.
   ExactEngine engine(World({{0.375, 1, 2, 0, 1}, {5, 0, -1, 0, 0.5}}), EngineOptions{.threads = 1});
   EXPECT_TRUE(engine.narrow());
+  EXPECT_EQ(engine.width(), 64u);
   EXPECT_EQ(engine.denominator(), Wide(480));
+}
+
+// K of a world of doubles the long way: L = 2^K is the largest denominator of the exact rationals.
+int least_exponent(const Circles& w) {
+  Wide l = 1;
+  for (const spec::Circle& c : exact_of(w))
+    for (const spec::Q* q : {&c.p.x(), &c.p.y(), &c.v.x(), &c.v.y(), &c.r})
+      l = std::max(l, Wide(boost::multiprecision::denominator(*q)));
+  return static_cast<int>(boost::multiprecision::msb(l));
+}
+
+TEST(exact_engine, holds_the_benchmark_scene_in_128_bits_because_its_least_exponent_needs_more_than_64) {
+  // Values drawn with 53 significant bits: the radii 2 + 4u alone are multiples of 2^-51, and the smallest
+  // positions side·j·2^-53 set K higher, so X = D·p for positions up to the side (over 2^10 here) is beyond
+  // 2^61: the benchmark scene needs the 128-bit width (docs/exact-engine.md).
+  const Circles w = random_scene(10'000, 0.1, 1);
+  const int k = least_exponent(w);
+  EXPECT_GT(k + 6 + 10, exact::kWordBits);  // 60·2^K·2^10 is beyond 2^61
+  ExactEngine engine(World(w), EngineOptions{.threads = 1});
+  EXPECT_EQ(engine.denominator(), Wide(60) << k);
+  EXPECT_EQ(engine.width(), 128u);
+  engine.step();
+  EXPECT_EQ(engine.world().circles(), step_all_pairs(World(w)).circles());
 }
 
 TEST(exact_engine, holds_a_subnormal_scene_in_gmp_integers_and_still_follows_the_oracle) {
@@ -196,11 +220,44 @@ TEST(exact_engine, moves_to_gmp_integers_exactly_when_the_proven_headroom_runs_o
   const double v = 0x1p119;
   ExactEngine engine(World({{0, 0, v, 0, 1}, {-1e3, 0, 0, 0, 1}}), EngineOptions{.threads = 1});
   spec::Sequence oracle = engine.exact();
+  EXPECT_EQ(engine.width(), 128u);
   for (int t = 1; t <= 70; ++t) {
     engine.step();
     oracle = spec::resolved_step(oracle);
     ASSERT_EQ(engine.exact(), oracle) << "step " << t;
     ASSERT_EQ(engine.narrow(), t <= 64) << "step " << t;
+  }
+}
+
+TEST(exact_engine, moves_from_64_to_128_bits_exactly_when_the_proven_headroom_runs_out) {
+  // D = 60, V = 2^55: X = 2^55·t stays within 2^61 for 64 steps and must not be held in 64 bits after; the
+  // first proof gives 63 steps (the other circle's |X| = 60,000 takes some room), the second one more.
+  const double v = 0x1p55;
+  ExactEngine engine(World({{0, 0, v, 0, 1}, {-1e3, 0, 0, 0, 1}}), EngineOptions{.threads = 1});
+  spec::Sequence oracle = engine.exact();
+  EXPECT_EQ(engine.width(), 64u);
+  for (int t = 1; t <= 70; ++t) {
+    engine.step();
+    oracle = spec::resolved_step(oracle);
+    ASSERT_EQ(engine.exact(), oracle) << "step " << t;
+    ASSERT_EQ(engine.world().circles(), nearest(oracle)) << "step " << t;
+    ASSERT_EQ(engine.width(), t <= 64 ? 64u : 128u) << "step " << t;
+  }
+}
+
+TEST(exact_engine, decides_a_tangency_at_the_64_bit_limit_in_integers) {
+  // Integer inputs (L = 1, D = 60): a at rest at p = ⌊2^61/60⌋ − 3, so X = 60·p is just within 2^61; b, moving
+  // away at v = 1, at p + 2 + offset, both of radius 1: overlapping, tangent, one unit apart. The approximations
+  // are off by about 2^-50·p ≈ 34 here, so only the 64-bit integers can decide; if they touch, a takes b's
+  // velocity.
+  const spec::Q p = spec::Q((Wide(1) << 61) / 60 - 3);
+  for (const int offset : {-1, 0, 1}) {
+    const spec::Sequence w{spec::circle(p, 0, 0, 0, 1), spec::circle(p + 2 + offset, 0, 1, 0, 1)};
+    ExactEngine engine(w, EngineOptions{.threads = 1});
+    ASSERT_EQ(engine.width(), 64u);
+    engine.step();
+    EXPECT_EQ(engine.exact(), spec::resolved_step(w)) << "offset " << offset;
+    EXPECT_EQ(engine.exact()[0].v.x(), offset <= 0 ? spec::Q(1) : spec::Q(0)) << "offset " << offset;
   }
 }
 
@@ -335,6 +392,88 @@ RC_GTEST_PROP(exact_intersect_scaled, decides_as_gmp_on_random_and_tangent_argum
   const bool expected = ws * ws >= wx * wx + wy * wy;
   RC_ASSERT(exact::intersect_scaled(s, dx, dy) == expected);
   RC_ASSERT(exact::intersect_scaled(ws, wx, wy) == expected);
+}
+
+RC_GTEST_PROP(exact_intersect_scaled, decides_as_gmp_in_64_bits_up_to_2_to_the_62, ()) {
+  // Within the 64-bit width's range (|S|, |dX|, |dY| ≤ 2^62): (3, 4, 5) tangencies moved by one, or random.
+  exact::Word s, dx, dy;
+  if (*rc::gen::arbitrary<bool>()) {
+    const exact::Word m = *rc::gen::inRange<exact::Word>(1, exact::Word{1} << 59);
+    s = 5 * m;
+    dx = 3 * m;
+    dy = 4 * m;
+    exact::Word* moved = *rc::gen::element(&s, &dx, &dy);
+    *moved += *rc::gen::inRange(-1, 2);
+  } else {
+    const auto draw = [] { return *rc::gen::inRange<exact::Word>(-(exact::Word{1} << 62), (exact::Word{1} << 62) + 1); };
+    s = std::abs(draw());
+    dx = draw();
+    dy = draw();
+  }
+  if (*rc::gen::arbitrary<bool>()) dy = -dy;
+  const Wide ws(s), wx(dx), wy(dy);
+  RC_ASSERT(exact::intersect_scaled(s, dx, dy) == (ws * ws >= wx * wx + wy * wy));
+}
+
+RC_GTEST_PROP(exact_to_double, is_the_nearest_double_of_any_128_bit_integer, ()) {
+  // Any magnitude, and the fast path's edge: |x| just below and at 2^105, where the split changes.
+  Narrow x = narrow(*rc::gen::arbitrary<std::uint64_t>(), *rc::gen::arbitrary<std::uint64_t>(), *rc::gen::inRange(1, 128));
+  if (*rc::gen::arbitrary<bool>()) x = (Narrow{1} << 105) + *rc::gen::inRange(-3, 4);
+  if (*rc::gen::arbitrary<bool>()) x = -x;
+  RC_ASSERT(exact::to_double(x) == spec::nearest_double(spec::Q(wide(x))));
+}
+
+// A double ≥ the rational q.
+double upper(const spec::Q& q) {
+  const double d = spec::nearest_double(q);
+  return spec::exact(d) < q ? std::nextafter(d, std::numeric_limits<double>::infinity()) : d;
+}
+
+RC_GTEST_PROP(exact_intersect_approximate, never_contradicts_the_exact_test_for_approximations_within_their_errors, ()) {
+  // Exact circles, tangent along (3, 4)/5 (then moved by 2^-40 or 2^-60 of the distance, or not), or
+  // arbitrary; approximations off by up to a chosen scale (none, 10^-12, 10^-6 relative, or 10^-3); each
+  // circle's error bound the largest of its three errors, rounded up, sometimes doubled.
+  const auto draw = [](int range) { return spec::Q(*rc::gen::inRange(-range, range + 1), *rc::gen::inRange(1, 1000)); };
+  const spec::Q xa = draw(1'000'000), ya = draw(1'000'000);
+  const spec::Q ra = abs(draw(10'000)), rb = abs(draw(10'000));
+  spec::Q xb, yb;
+  if (*rc::gen::arbitrary<bool>()) {
+    const spec::Q nudge = spec::Q(*rc::gen::inRange(-1, 2)) / spec::Q(Wide(1) << *rc::gen::element(40, 60));
+    xb = xa + (ra + rb) * 3 / 5 * (1 + nudge);
+    yb = ya + (ra + rb) * 4 / 5 * (1 + nudge);
+  } else {
+    xb = xa + draw(20'000);
+    yb = ya + draw(20'000);
+  }
+  const double scale = *rc::gen::element(0.0, 1e-12, 1e-6, 1e-3);
+  const auto approximate = [scale](const spec::Q& x) {
+    const double d = spec::nearest_double(x);
+    const double off = scale * static_cast<double>(*rc::gen::inRange(-1000, 1001)) / 1000;
+    return d + (scale < 1e-3 ? off * std::fabs(d) : off);
+  };
+  // ρ ≥ 0, as the engine's are.
+  const double ax = approximate(xa), ay = approximate(ya), pa = std::max(0.0, approximate(ra));
+  const double bx = approximate(xb), by = approximate(yb), pb = std::max(0.0, approximate(rb));
+  const auto error = [](std::initializer_list<std::pair<double, const spec::Q*>> fields) {
+    spec::Q largest = 0;
+    for (const auto& [d, q] : fields) largest = std::max(largest, spec::Q(abs(spec::exact(d) - *q)));
+    return upper(largest) * (*rc::gen::arbitrary<bool>() ? 2 : 1);
+  };
+  const double ea = error({{ax, &xa}, {ay, &ya}, {pa, &ra}}), eb = error({{bx, &xb}, {by, &yb}, {pb, &rb}});
+  const bool expected = (ra + rb) * (ra + rb) >= (xb - xa) * (xb - xa) + (yb - ya) * (yb - ya);
+  const Decision d = exact::intersect_approximate(ax, ay, pa, ea, bx, by, pb, eb);
+  RC_CLASSIFY(d == Decision::undecided, "undecided");
+  if (d != Decision::undecided) RC_ASSERT((d == Decision::intersect) == expected);
+}
+
+TEST(exact_intersect_approximate, decides_clear_pairs_and_leaves_tangency_to_the_integers) {
+  // Radii 2 and 2 at distance 3 (overlap), 5 (apart), 4 (tangent), centres known to within 10^-9.
+  EXPECT_EQ(exact::intersect_approximate(1000, 1000, 2, 1e-9, 1003, 1000, 2, 1e-9), Decision::intersect);
+  EXPECT_EQ(exact::intersect_approximate(1000, 1000, 2, 1e-9, 1000, 1005, 2, 1e-9), Decision::disjoint);
+  EXPECT_EQ(exact::intersect_approximate(1000, 1000, 2, 1e-9, 1000, 1004, 2, 1e-9), Decision::undecided);
+  // 10^-9 off tangency is decided with errors of 10^-13, left with errors of 10^-9.
+  EXPECT_EQ(exact::intersect_approximate(0, 0, 2, 1e-13, 4 + 1e-9, 0, 2, 1e-13), Decision::disjoint);
+  EXPECT_EQ(exact::intersect_approximate(0, 0, 2, 1e-9, 4 + 1e-9, 0, 2, 1e-9), Decision::undecided);
 }
 
 TEST(exact_intersect_scaled, holds_at_tangency_and_fails_one_unit_past_it_at_2_to_the_120) {
