@@ -6,7 +6,6 @@
 #include "impl/engine.hpp"
 #include "impl/state_hash.hpp"
 
-#include <cstdio>
 #include <memory>
 #include <new>
 #include <stdexcept>
@@ -14,15 +13,6 @@
 
 namespace circles::cli {
 namespace {
-
-// "0.1 (0x1.999999999999ap-4)": the shortest decimal that reads back as x, and its hexadecimal form.
-std::string decimal_and_hex(double x) {
-  std::string text;
-  json_number::append(text, x);
-  char hex[32];  // "%a" of a double: at most "-0x1.fffffffffffffp-1022" (24 characters)
-  std::snprintf(hex, sizeof hex, "%a", x);
-  return text + " (" + hex + ")";
-}
 
 // The world the reference expects after `input`, or where its step overflows.
 class Reference {
@@ -113,7 +103,7 @@ void print_check(const TraceCheck& check, const std::string& source, TraceRefere
   if (d.difference) {
     const Difference& f = *d.difference;
     out << "circle " << f.circle << ", field " << spec::name(spec::Field(f.field)) << ": expected "
-        << decimal_and_hex(f.expected) << ", actual " << decimal_and_hex(f.actual) << "\n";
+        << json_number::decimal_and_hex(f.expected) << ", actual " << json_number::decimal_and_hex(f.actual) << "\n";
     // The decision is judged on the world of the line before, which is the reference's input only for double.
     if (!exact) out << "  which decision: " << f.decision << "\n";
   } else {

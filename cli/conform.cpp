@@ -8,7 +8,6 @@
 #include <rapidcheck.h>
 
 #include <charconv>
-#include <cstdio>
 #include <span>
 #include <variant>
 #include <vector>
@@ -20,14 +19,6 @@ using properties::NoAnswer;
 
 // Shrinking asks the candidate at most this many worlds: enough for worlds of 8 circles, bounded for a slow one.
 constexpr int kMaxShrinkQueries = 2000;
-
-std::string decimal_and_hex(double x) {
-  std::string text;
-  json_number::append(text, x);
-  char hex[64];
-  std::snprintf(hex, sizeof hex, "%a", x);
-  return text + " (" + hex + ")";
-}
 
 // A failure of one case: the step of the chain (1-based), its input, the two answers and what differs.
 struct Failure {
@@ -100,7 +91,7 @@ void report(std::ostream& out, const Candidate& candidate, const ConformOptions&
       "counterexample: " + found,
       "  step " + std::to_string(failure.step) + " of " + std::to_string(options.steps) + ", circle " +
           std::to_string(d.circle) + ", field " + properties::field_name(d.field) + ": expected " +
-          decimal_and_hex(d.expected) + ", got " + decimal_and_hex(d.actual),
+          json_number::decimal_and_hex(d.expected) + ", got " + json_number::decimal_and_hex(d.actual),
       "  which decision: " + d.decision,
   };
   for (const std::string& line : head) out << line << "\n";

@@ -3,6 +3,7 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string_view>
 
@@ -24,6 +25,18 @@ void append(std::string& out, double x) {
   const std::string_view written(text.data(), static_cast<std::size_t>(end - text.data()));
   out += written;
   if (written.find_first_of(".e") == std::string_view::npos) out += ".0";
+}
+
+std::string hex(double x) {
+  char text[32];  // "%a" of a double: at most "-0x1.fffffffffffffp-1022" (24 characters)
+  std::snprintf(text, sizeof text, "%a", x);
+  return text;
+}
+
+std::string decimal_and_hex(double x) {
+  std::string text;
+  append(text, x);
+  return text + " (" + hex(x) + ")";
 }
 
 }  // namespace circles::cli::json_number

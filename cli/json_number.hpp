@@ -29,4 +29,11 @@ double from_integer(std::uint64_t n);
 // std::domain_error for NaN and infinities, which JSON cannot write.
 void append(std::string& out, double x);
 
+// x in C's hexadecimal form ("%a"), which names every double exactly: "0x1.999999999999ap-4".
+std::string hex(double x);
+
+// For messages: the shortest decimal that reads back as x and its hexadecimal form, "0.1 (0x1.999999999999ap-4)".
+// Throws std::domain_error for NaN and infinities, like append.
+std::string decimal_and_hex(double x);
+
 }  // namespace circles::cli::json_number

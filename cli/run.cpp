@@ -7,7 +7,6 @@
 #include "cli/video.hpp"
 
 #include <algorithm>
-#include <cstdio>
 #include <optional>
 #include <stdexcept>
 #include <thread>
@@ -24,20 +23,7 @@ Circles doubles_of(const std::vector<spec::Circle>& scene) {
 
 Circles doubles_of(const Scene& scene) { return doubles_of(scene.circles); }
 
-namespace {
-
 using Clock = std::chrono::steady_clock;
-
-// The shortest decimal that reads back as x, and its hexadecimal form, for messages: "0.1 (0x1.999999999999ap-4)".
-std::string show(double x) {
-  std::string text;
-  json_number::append(text, x);
-  char hex[32];  // "%a" of a double: at most "-0x1.fffffffffffffp-1022" (24 characters)
-  std::snprintf(hex, sizeof hex, "%a", x);
-  return text + " (" + hex + ")";
-}
-
-}  // namespace
 
 RunResult run(const Circles& world, const RunOptions& options) {
   if (options.every == 0) throw std::invalid_argument("RunOptions::every: a frame every 0 steps");
@@ -244,7 +230,8 @@ Comparison compare_with_oracle(const EngineEntry& engine, const Circles& world, 
       for (std::size_t f = 0; f < want[k].size(); ++f)
         if (want[k][f] != got[k][f]) {  // by value: -0 == +0
           c.difference = "step " + std::to_string(step) + ", circle " + std::to_string(k) + ", field " +
-                         spec::name(spec::Field(f)) + ": oracle " + show(want[k][f]) + ", engine " + show(got[k][f]);
+                         spec::name(spec::Field(f)) + ": oracle " + json_number::decimal_and_hex(want[k][f]) +
+                         ", engine " + json_number::decimal_and_hex(got[k][f]);
           return c;
         }
   }

@@ -12,7 +12,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <iomanip>
 #include <sstream>
@@ -53,10 +52,8 @@ void append_rows(std::string& out, const Rows& rows, Write write) {
 void append_decimal(std::string& out, const std::array<double, 5>& c, std::size_t j) { json_number::append(out, c[j]); }
 
 void append_hex(std::string& out, const std::array<double, 5>& c, std::size_t j) {
-  char hex[32];  // "%a" of a double: at most "-0x1.fffffffffffffp-1022" (24 characters)
-  std::snprintf(hex, sizeof hex, "%a", c[j]);
   out += '"';
-  out += hex;
+  out += json_number::hex(c[j]);
   out += '"';
 }
 

@@ -2,6 +2,8 @@
 // libFuzzer reports as a crash and saves the input (docs/hardening.md).
 #pragma once
 
+#include <bit>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <string_view>
@@ -20,6 +22,19 @@ inline bool is_one_printable_line(std::string_view message) {
   if (message.empty()) return false;
   for (const char c : message)
     if (c < 0x20 || c > 0x7E) return false;
+  return true;
+}
+
+// Two worlds (sequences of circles, each a sequence of doubles) with the same doubles bit for bit: a round trip
+// must keep -0 and every payload, which == would not see.
+template <class World>
+bool same_bits(const World& a, const World& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    if (a[k].size() != b[k].size()) return false;
+    for (std::size_t j = 0; j < a[k].size(); ++j)
+      if (std::bit_cast<std::uint64_t>(a[k][j]) != std::bit_cast<std::uint64_t>(b[k][j])) return false;
+  }
   return true;
 }
 

@@ -6,10 +6,8 @@
 #include "cli/protocol.hpp"
 #include "fuzz/check.hpp"
 
-#include <bit>
 #include <cmath>
 #include <cstddef>
-#include <cstdint>
 #include <string>
 #include <string_view>
 
@@ -18,14 +16,6 @@ using namespace circles;
 namespace {
 
 constexpr std::size_t kLine = 7;  // any line number: the check is that messages carry it
-
-bool same_bits(const cli::Circles& a, const cli::Circles& b) {
-  if (a.size() != b.size()) return false;
-  for (std::size_t k = 0; k < a.size(); ++k)
-    for (std::size_t j = 0; j < a[k].size(); ++j)
-      if (std::bit_cast<std::uint64_t>(a[k][j]) != std::bit_cast<std::uint64_t>(b[k][j])) return false;
-  return true;
-}
 
 void check(std::string_view text, std::string_view counter) {
   cli::Line line;
@@ -45,7 +35,7 @@ void check(std::string_view text, std::string_view counter) {
   const std::string written = cli::format_line(counter, line.number, line.circles);
   const cli::Line again = cli::parse_line(written, kLine, counter);
   fuzz::require(again.number == line.number, "the counter reads back", written);
-  fuzz::require(same_bits(again.circles, line.circles), "the doubles read back bit for bit", written);
+  fuzz::require(fuzz::same_bits(again.circles, line.circles), "the doubles read back bit for bit", written);
   fuzz::require(cli::format_line(counter, again.number, again.circles) == written, "writing is a fixed point",
                 written);
 }

@@ -7,7 +7,6 @@
 #include "cli/trace_reader.hpp"
 #include "fuzz/check.hpp"
 
-#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -23,14 +22,6 @@ using namespace circles;
 namespace {
 
 const std::string kSource = "fuzz.jsonl";
-
-bool same_bits(const cli::Circles& a, const cli::Circles& b) {
-  if (a.size() != b.size()) return false;
-  for (std::size_t k = 0; k < a.size(); ++k)
-    for (std::size_t j = 0; j < a[k].size(); ++j)
-      if (std::bit_cast<std::uint64_t>(a[k][j]) != std::bit_cast<std::uint64_t>(b[k][j])) return false;
-  return true;
-}
 
 // Reads `text` to its end or to its first fault: the worlds read, and the error if there was one.
 std::vector<cli::Line> read(const std::string& text, std::optional<cli::TraceReadError>& error,
@@ -89,7 +80,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   fuzz::require(again.size() == worlds.size(), "as many worlds read back", written);
   for (std::size_t t = 0; t < worlds.size(); ++t) {
     fuzz::require(again[t].number == worlds[t].number, "the steps read back", written);
-    fuzz::require(same_bits(again[t].circles, worlds[t].circles), "the doubles read back bit for bit", written);
+    fuzz::require(fuzz::same_bits(again[t].circles, worlds[t].circles), "the doubles read back bit for bit", written);
     fuzz::require(again_lines[t] == t + 1, "world t is on line t + 1 of a written trace", written);
   }
   return 0;

@@ -5,24 +5,7 @@
 set -eu
 circles=$1
 case_name=$2
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
-
-fail() {
-  echo "FAIL: $*" >&2
-  exit 1
-}
-
-# expect_exit CODE COMMAND...: runs COMMAND, which must exit with CODE.
-expect_exit() {
-  want=$1
-  shift
-  set +e
-  "$@"
-  got=$?
-  set -e
-  [ "$got" -eq "$want" ] || fail "$* exited $got, expected $want"
-}
+. "$(dirname "$0")/end_to_end_lib.sh"
 
 # Circle 1 moves by exactly 2^1017 per step from DBL_MAX - 3 * 2^1017 (0x1.f3fffffffffffp+1023) at
 # v = 60 * 2^1017 (0x1.ep+1022): it reaches DBL_MAX in w_3, and step 4 overflows (cli_run_test.cpp derives it).

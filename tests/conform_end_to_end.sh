@@ -7,13 +7,7 @@ set -eu
 circles=$1
 source_dir=$2
 case_name=$3
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
-
-fail() {
-  echo "FAIL: $*" >&2
-  exit 1
-}
+. "$(dirname "$0")/end_to_end_lib.sh"
 
 # run_conform WANT ARGS...: runs `circles conform ARGS`, stdout to $dir/out, stderr to $dir/err; it must exit
 # with WANT.

@@ -5,24 +5,7 @@
 set -eu
 circles=$1
 case_name=$2
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
-
-fail() {
-  echo "FAIL: $*" >&2
-  exit 1
-}
-
-# expect_exit CODE COMMAND...: runs COMMAND, which must exit with CODE.
-expect_exit() {
-  want=$1
-  shift
-  set +e
-  "$@"
-  got=$?
-  set -e
-  [ "$got" -eq "$want" ] || fail "$* exited $got, expected $want"
-}
+. "$(dirname "$0")/end_to_end_lib.sh"
 
 case $case_name in
 run_writes_every_kth_frame_and_says_so)

@@ -6,24 +6,7 @@ set -eu
 circles=$1
 source_dir=$2
 case_name=$3
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
-
-fail() {
-  echo "FAIL: $*" >&2
-  exit 1
-}
-
-# expect_exit CODE COMMAND...: runs COMMAND, which must exit with CODE.
-expect_exit() {
-  want=$1
-  shift
-  set +e
-  "$@"
-  got=$?
-  set -e
-  [ "$got" -eq "$want" ] || fail "$* exited $got, expected $want"
-}
+. "$(dirname "$0")/end_to_end_lib.sh"
 
 case $case_name in
 python_example_checks_the_vectors_with_fractions)
