@@ -1,5 +1,7 @@
 #include "cli/corpus.hpp"
 
+#include "cli/protocol.hpp"  // in_quotes
+
 #include "cli/json_number.hpp"
 #include "cli/output_file.hpp"
 #include "spec/outside_c.hpp"
@@ -20,7 +22,6 @@ constexpr std::string_view kKeys[] = {"format", "profile", "world",  "level",   
                                       "steps",  "step",    "candidate", "expected", "actual", "difference"};
 constexpr std::string_view kDifferenceKeys[] = {"circle", "field", "expected", "actual", "decision"};
 
-std::string key_name(std::string_view key) { return "\"" + std::string(key) + "\""; }
 
 void append_world(std::string& out, const Circles& w) {
   out += "[";
@@ -51,12 +52,12 @@ class Reader {
   [[noreturn]] void fail(const std::string& reason) const { throw CorpusError(source_ + ": " + reason); }
 
   std::string string(const nlohmann::json& x, std::string_view key) const {
-    if (!x.is_string()) fail("key " + key_name(key) + ": expected a string, found " + x.type_name());
+    if (!x.is_string()) fail("key " + in_quotes(key) + ": expected a string, found " + x.type_name());
     return x.get<std::string>();
   }
 
   std::uint64_t integer(const nlohmann::json& x, std::string_view key) const {
-    if (!x.is_number_unsigned()) fail("key " + key_name(key) + ": expected an integer >= 0, found " + x.dump());
+    if (!x.is_number_unsigned()) fail("key " + in_quotes(key) + ": expected an integer >= 0, found " + x.dump());
     return x.get<std::uint64_t>();
   }
 
@@ -68,7 +69,7 @@ class Reader {
 
   // A world of the resolved profile's C: finite doubles, r >= 0.
   Circles world(const nlohmann::json& x, std::string_view key) const {
-    const std::string where = "key " + key_name(key);
+    const std::string where = "key " + in_quotes(key);
     if (!x.is_array()) fail(where + ": expected an array of circles [px, py, vx, vy, r], found " + x.type_name());
     Circles w;
     for (std::size_t k = 0; k < x.size(); ++k) {
@@ -145,10 +146,10 @@ StoredCounterexample from_json(std::string_view text, const std::string& source)
   if (!root.is_object()) read.fail("expected an object {\"format\": ..., \"profile\": ..., \"world\": ...}");
   for (const auto& [key, value] : root.items())
     if (std::find(std::begin(kKeys), std::end(kKeys), key) == std::end(kKeys))
-      read.fail("unknown key " + key_name(key) + " (a counterexample has the keys format, profile, world, level, "
+      read.fail("unknown key " + in_quotes(key) + " (a counterexample has the keys format, profile, world, level, "
                 "seed, case, family, steps, step, candidate, expected, actual and difference)");
   for (const char* key : {"format", "profile", "world"})
-    if (!root.contains(key)) read.fail("missing key " + key_name(key));
+    if (!root.contains(key)) read.fail("missing key " + in_quotes(key));
   if (read.string(root["format"], "format") != kFormat)
     read.fail("key \"format\": expected \"" + std::string(kFormat) + "\", found " + root["format"].dump());
 
@@ -173,9 +174,9 @@ StoredCounterexample from_json(std::string_view text, const std::string& source)
     if (!d.is_object()) read.fail("key \"difference\": expected an object, found " + std::string(d.type_name()));
     for (const auto& [key, value] : d.items())
       if (std::find(std::begin(kDifferenceKeys), std::end(kDifferenceKeys), key) == std::end(kDifferenceKeys))
-        read.fail("key \"difference\": unknown key " + key_name(key));
+        read.fail("key \"difference\": unknown key " + in_quotes(key));
     for (const std::string_view key : kDifferenceKeys)
-      if (!d.contains(std::string(key))) read.fail("key \"difference\": missing key " + key_name(key));
+      if (!d.contains(std::string(key))) read.fail("key \"difference\": missing key " + in_quotes(key));
     properties::Difference diff{};
     diff.circle = read.integer(d["circle"], "circle");
     const std::string field = read.string(d["field"], "field");

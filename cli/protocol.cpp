@@ -67,7 +67,7 @@ class Reader {
   }
   bool end_object() {
     state_ = State::done;
-    if (!seen_counter_) return fail("missing key \"" + std::string(counter_) + "\"");
+    if (!seen_counter_) return fail("missing key " + in_quotes(counter_));
     if (!seen_circles_) return fail("missing key \"circles\"");
     return true;
   }
@@ -132,7 +132,7 @@ class Reader {
   std::pair<std::string, std::string> expectation() const {
     switch (state_) {
       case State::top: return {"", "an object " + shape()};
-      case State::counter: return {"\"" + std::string(counter_) + "\": ", "an integer from 0 to 18446744073709551615"};
+      case State::counter: return {in_quotes(counter_) + ": ", "an integer from 0 to 18446744073709551615"};
       case State::circles: return {"\"circles\": ", "an array of circles [px, py, vx, vy, r]"};
       case State::list: return {circle_name() + ": ", "an array [px, py, vx, vy, r]"};
       case State::circle:
@@ -158,7 +158,7 @@ class Reader {
     return false;
   }
 
-  std::string keys() const { return "\"" + std::string(counter_) + "\" and \"circles\""; }
+  std::string keys() const { return in_quotes(counter_) + " and \"circles\""; }
   std::string shape() const { return line_shape(counter_); }
   std::string circle_name() const { return "circle " + std::to_string(line.circles.size()); }
   std::string field_name() const { return circle_name() + ", field " + spec::name(spec::Field(field_)); }
@@ -206,6 +206,13 @@ std::string printable(std::string_view bytes) {
       out += kHex[b & 0xF];
     }
   }
+  return out;
+}
+
+std::string in_quotes(std::string_view bytes) {
+  std::string out = "\"";
+  out += printable(bytes);
+  out += '"';
   return out;
 }
 

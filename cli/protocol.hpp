@@ -52,6 +52,9 @@ Line parse_line(std::string_view text, std::size_t line_number, std::string_view
 // whatever the input held.
 std::string printable(std::string_view bytes);
 
+// A key or name as messages show it: printable(bytes) between double quotes.
+std::string in_quotes(std::string_view bytes);
+
 // Appends {"<counter>":N,"circles":[[px,py,vx,vy,r],...]} without a newline, each number in the shortest
 // form that reads back as the same double. Throws std::domain_error for a coordinate that is not finite.
 void append_line(std::string& out, std::string_view counter, std::uint64_t number, const Circles& circles);

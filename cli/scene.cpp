@@ -30,7 +30,6 @@ bool is_one_of(const std::string& key, const std::array<std::string_view, N>& ke
   return std::find(keys.begin(), keys.end(), key) != keys.end();
 }
 
-std::string quote_key(const std::string& key) { return "\"" + printable(key) + "\""; }
 
 // What a value is, for messages: a number as JSON writes it ("found -1"), anything else by its type ("found
 // string").
@@ -75,15 +74,15 @@ class Builder {
   }
   bool key(std::string& k) {
     if (open_.size() == 1 && !is_one_of(k, kSceneKeys))
-      throw SceneError(source_ + ": unknown key " + quote_key(k) +
+      throw SceneError(source_ + ": unknown key " + in_quotes(k) +
                        " in the top-level object (a scene has the keys \"circles\", \"name\", \"steps\" and "
                        "\"$schema\")");
     if (open_.size() == 3 && in_circle() && !is_one_of(k, kCircleKeys))
-      throw SceneError(source_ + ": " + circle() + ": unknown key " + quote_key(k) +
+      throw SceneError(source_ + ": " + circle() + ": unknown key " + in_quotes(k) +
                        " (a circle object has the keys \"p\", \"v\", \"r\" and \"name\")");
     Open& object = open_.back();
     if (object.json->contains(k))
-      throw SceneError(source_ + ": duplicate key " + quote_key(k) + " in " +
+      throw SceneError(source_ + ": duplicate key " + in_quotes(k) + " in " +
                        (open_.size() == 1 ? "the top-level object" : "the object at " + pointer(open_.size() - 1)));
     object.key = std::move(k);
     return true;
