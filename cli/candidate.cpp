@@ -145,17 +145,19 @@ std::string ProcessCandidate::read_line(std::uint64_t id) {
   }
 }
 
-Circles ProcessCandidate::answer(const Circles& world, std::uint64_t id) {
-  if (pid_ <= 0) throw BrokenCandidate(name() + " is not running (" + status_ + ")");
-  std::string request = format_line(kId, id, world);
-  request += '\n';
-  std::string_view rest = request;
-  while (!rest.empty()) {
-    const ssize_t wrote = write(to_child_, rest.data(), rest.size());
+void ProcessCandidate::write_requests(std::string_view lines, std::span<const std::size_t> ends,
+                                      std::uint64_t first_id) {
+  const std::size_t total = lines.size();
+  while (!lines.empty()) {
+    const ssize_t wrote = write(to_child_, lines.data(), lines.size());
     if (wrote < 0 && errno == EINTR) continue;
     if (wrote < 0 && errno != EPIPE) throw BrokenCandidate(system_error("cannot write to the candidate"));
     if (wrote < 0) {
       // Its input is closed: most likely it exited (then say how, as when its output ends), else it closed it.
+      // The request named is the one being written: the first not wholly written.
+      const std::size_t at = total - lines.size();
+      const std::uint64_t id = first_id + static_cast<std::uint64_t>(
+                                              std::upper_bound(ends.begin(), ends.end(), at) - ends.begin());
       const auto give_up = std::chrono::steady_clock::now() + deadline_;
       std::string status;
       while ((status = exit_status(false)).empty() && std::chrono::steady_clock::now() < give_up)
@@ -163,8 +165,11 @@ Circles ProcessCandidate::answer(const Circles& world, std::uint64_t id) {
       if (status.empty()) throw BrokenCandidate(name() + " closed its input at request " + std::to_string(id));
       throw BrokenCandidate(name() + " " + status + " before answering request " + std::to_string(id));
     }
-    rest.remove_prefix(static_cast<std::size_t>(wrote));
+    lines.remove_prefix(static_cast<std::size_t>(wrote));
   }
+}
+
+Circles ProcessCandidate::read_answer(const Circles& world, std::uint64_t id) {
   const std::string text = read_line(id);
   ++lines_;
   Line line;
@@ -178,7 +183,63 @@ Circles ProcessCandidate::answer(const Circles& world, std::uint64_t id) {
   if (line.circles.size() != world.size())
     throw BrokenCandidate(name() + " answered request " + std::to_string(id) + " (" + std::to_string(world.size()) +
                           " circles) with " + std::to_string(line.circles.size()) + " circles");
-  return line.circles;
+  return std::move(line.circles);
+}
+
+std::vector<Circles> Answers::all() && {
+  if (broken) throw *broken;
+  return std::move(answers);
+}
+
+Answers Candidate::answer_all(std::span<const Circles> worlds, std::uint64_t first_id) {
+  Answers read;
+  read.answers.reserve(worlds.size());
+  try {
+    for (const Circles& world : worlds) read.answers.push_back(answer(world, first_id++));
+  } catch (const BrokenCandidate& e) {
+    read.broken = e;
+  }
+  return read;
+}
+
+Answers ProcessCandidate::answer_all(std::span<const Circles> worlds, std::uint64_t first_id) {
+  Answers read;
+  read.answers.reserve(worlds.size());
+  try {
+    answer_batches(worlds, first_id, read.answers);
+  } catch (const BrokenCandidate& e) {
+    read.broken = e;
+  }
+  return read;
+}
+
+void ProcessCandidate::answer_batches(std::span<const Circles> worlds, std::uint64_t first_id,
+                                      std::vector<Circles>& answers) {
+  std::string lines;
+  std::vector<std::size_t> ends;  // the offset just past each request line in `lines`
+  for (std::size_t first = 0; first < worlds.size();) {
+    if (pid_ <= 0) throw BrokenCandidate(name() + " is not running (" + status_ + ")");
+    // The batch: requests first … last − 1, at least one, at most kBatchBytes unless the first alone is more.
+    lines.clear();
+    ends.clear();
+    std::size_t last = first;
+    for (; last < worlds.size(); ++last) {
+      const std::size_t before = lines.size();
+      lines += format_line(kId, first_id + last, worlds[last]);
+      lines += '\n';
+      if (last > first && lines.size() > kBatchBytes) {
+        lines.resize(before);
+        break;
+      }
+      ends.push_back(lines.size());
+    }
+    write_requests(lines, ends, first_id + first);
+    for (; first < last; ++first) answers.push_back(read_answer(worlds[first], first_id + first));
+  }
+}
+
+Circles ProcessCandidate::answer(const Circles& world, std::uint64_t id) {
+  return std::move(answer_all(std::span(&world, 1), id).all().front());
 }
 
 void ProcessCandidate::finish() {

@@ -7,6 +7,7 @@
 
 #include <rapidcheck.h>
 
+#include <algorithm>
 #include <charconv>
 #include <span>
 #include <variant>
@@ -20,9 +21,10 @@ using properties::NoAnswer;
 // Shrinking asks the candidate at most this many worlds: enough for worlds of 8 circles, bounded for a slow one.
 constexpr int kMaxShrinkQueries = 2000;
 
-// A failure of one case: the step of the chain (1-based), its input, the two answers and what differs.
+// A failure of one case: the step of the chain (1-based) of how many, its input, the two answers and what
+// differs.
 struct Failure {
-  std::uint64_t step;
+  std::uint64_t step, steps;
   Circles input, expected, actual;
   Difference difference;
 };
@@ -32,25 +34,86 @@ struct Failure {
 // or checked up to a world with no expected answer.
 enum class Ending { checked, skipped, cut_short };
 
+// One case's chain of steps, as Checker::run_all runs it.
+struct Chain {
+  Chain(Circles w_0, std::uint64_t steps_to_chain) : now(std::move(w_0)), steps(steps_to_chain) {}
+  Circles now;                    // the world to ask next: w_0, then the candidate's last answer
+  std::uint64_t steps, step = 0;  // the steps to chain, and the steps asked so far
+  Ending ending = Ending::checked;
+  std::optional<Failure> failure;
+};
+
+// The most cases conform asks the candidate about in one Checker::run_all, which sends every request whose
+// world is known before reading their answers (ProcessCandidate also bounds the bytes in flight), so that they
+// share one round trip through the pipes. A batch of requests ends sooner, at a case that chains another step:
+// by default at each tangent-after-step case, one in 17, so about 14 requests a batch (docs/benchmarks.md);
+// with --steps 2 or more, at every case, so 2. The bound matters when no case chains, and bounds the requests
+// a failing run asks beyond the case-by-case run's.
+constexpr std::size_t kBatchCases = 64;
+
 class Checker {
  public:
   Checker(Candidate& candidate, const ConformOptions& options) : candidate_(candidate), options_(options) {}
 
-  std::optional<Failure> run(const Circles& w, Ending& ending) {
-    ending = Ending::checked;
-    Circles now = w;
-    for (std::uint64_t step = 1; step <= options_.steps; ++step) {
-      const auto reference = properties::expected_step(now, options_.profile);
-      if (!std::holds_alternative<Circles>(reference)) {
-        ending = step == 1 ? Ending::skipped : Ending::cut_short;
-        return std::nullopt;
+  // Chains `steps` steps from w.
+  std::optional<Failure> run(const Circles& w, std::uint64_t steps, Ending& ending) {
+    Chain chain(w, steps);
+    run_all(std::span(&chain, 1));
+    ending = chain.ending;
+    return std::move(chain.failure);
+  }
+
+  // Runs the chains as run() would run them one after another, up to the first that fails: returns its index
+  // (its `failure` set), or chains.size() if none does. The candidate is asked in batches
+  // (Candidate::answer_all): every request whose world is known, in the order of the sequential run, up to
+  // and including the first whose answer a later request needs (a step of a chain that goes on). So the
+  // candidate gets the sequential run's requests in the same order, with the same ids (a step that carries
+  // state from one request to the next is caught as before), plus, after a failing request, the rest of its
+  // batch, whose answers are read and not judged.
+  std::size_t run_all(std::span<Chain> chains) {
+    std::vector<Circles> asked, expected;
+    std::vector<std::size_t> whose;  // asked[i] is the next step of chains[whose[i]]
+    for (std::size_t first = 0; first < chains.size();) {
+      asked.clear();
+      expected.clear();
+      whose.clear();
+      std::size_t next = chains.size();  // where the next batch starts: the chain that goes on, if any
+      for (std::size_t k = first; k < chains.size(); ++k) {
+        Chain& chain = chains[k];
+        if (chain.step >= chain.steps) continue;
+        auto reference = properties::expected_step(chain.now, options_.profile);
+        if (!std::holds_alternative<Circles>(reference)) {
+          chain.ending = chain.step == 0 ? Ending::skipped : Ending::cut_short;
+          continue;
+        }
+        asked.push_back(chain.now);
+        expected.push_back(std::move(std::get<Circles>(reference)));
+        whose.push_back(k);
+        if (chain.step + 1 < chain.steps) {  // its next request waits for this answer
+          next = k;
+          break;
+        }
       }
-      const Circles& expected = std::get<Circles>(reference);
-      const Circles actual = candidate_.answer(now, next_id_++);
-      if (auto d = compare(now, expected, actual, options_.level)) return Failure{step, now, expected, actual, *d};
-      now = actual;
+      if (asked.empty()) break;
+      Answers read = candidate_.answer_all(asked, next_id_);
+      std::vector<Circles>& answers = read.answers;
+      next_id_ += asked.size();
+      // The answers before a fault are judged first: a wrong one is the counterexample the sequential run
+      // reports, even when the candidate then breaks on a request the sequential run would not have sent.
+      for (std::size_t i = 0; i < answers.size(); ++i) {
+        Chain& chain = chains[whose[i]];
+        ++chain.step;
+        if (auto d = compare(asked[i], expected[i], answers[i], options_.level)) {
+          chain.failure = Failure{chain.step, chain.steps, std::move(asked[i]), std::move(expected[i]),
+                                  std::move(answers[i]), *d};
+          return whose[i];
+        }
+        chain.now = std::move(answers[i]);
+      }
+      if (read.broken) throw *read.broken;
+      first = next;
     }
-    return std::nullopt;
+    return chains.size();
   }
 
  private:
@@ -89,7 +152,7 @@ void report(std::ostream& out, const Candidate& candidate, const ConformOptions&
       "circles conform: " + candidate.name() + " does not conform (level " + options.level.text() + ", " + profile +
           " profile)",
       "counterexample: " + found,
-      "  step " + std::to_string(failure.step) + " of " + std::to_string(options.steps) + ", circle " +
+      "  step " + std::to_string(failure.step) + " of " + std::to_string(failure.steps) + ", circle " +
           std::to_string(d.circle) + ", field " + properties::field_name(d.field) + ": expected " +
           json_number::decimal_and_hex(d.expected) + ", got " + json_number::decimal_and_hex(d.actual),
       "  which decision: " + d.decision,
@@ -212,7 +275,7 @@ int conform(Candidate& candidate, const ConformOptions& options, std::ostream& o
     }
     for (const auto& [file, stored] : corpus) {
       Ending ending = Ending::checked;
-      const std::optional<Failure> failure = checker.run(stored.world, ending);
+      const std::optional<Failure> failure = checker.run(stored.world, options.steps, ending);
       if (ending == Ending::skipped) {
         ++not_replayed;
         continue;
@@ -237,21 +300,49 @@ int conform(Candidate& candidate, const ConformOptions& options, std::ostream& o
   std::vector<std::uint64_t> drawn(F, 0), checked(F, 0);
   std::uint64_t cases = 0, skipped = 0, cut_short = 0;
   rc::Random stream(options.seed);
+  // The cases of this run, checked kBatchCases at a time (Checker::run_all), then counted and, for the first
+  // that fails, shrunk and reported, in order: the verdict is the sequential run's.
+  struct Case {
+    std::uint64_t index;
+    std::size_t family;
+    rc::Shrinkable<Circles> world;
+  };
+  std::vector<Case> batch;
+  std::vector<Chain> chains;
+  // Checks the batch; returns the index of its failing case, if one fails.
+  const auto check_batch = [&]() -> std::optional<std::size_t> {
+    const std::size_t failed = checker.run_all(chains);
+    for (std::size_t k = 0; k < chains.size() && k <= failed; ++k) {
+      ++cases;
+      ++drawn[batch[k].family];
+      if (chains[k].ending == Ending::skipped) ++skipped;
+      else ++checked[batch[k].family];
+      cut_short += chains[k].ending == Ending::cut_short;
+    }
+    if (failed < chains.size()) return failed;
+    batch.clear();
+    chains.clear();
+    return std::nullopt;
+  };
   // --case I replays case I whatever --cases says: the replay line of a report does not repeat it.
   const std::uint64_t end = options.only_case ? *options.only_case + 1 : options.cases;
-  for (std::uint64_t c = 0; c < end; ++c) {
+  std::optional<std::size_t> failed;
+  for (std::uint64_t c = 0; c < end && !failed; ++c) {
     const rc::Random random = stream.split();  // case c's stream, whichever cases this run checks
     if (options.only_case ? c != *options.only_case : (c / F) % options.shards != options.shard) continue;
     const std::size_t family = all.family(c);
-    rc::Shrinkable<Circles> world = all.world(c, random);
-    Ending ending = Ending::checked;
-    std::optional<Failure> failure = checker.run(world.value(), ending);
-    ++cases;
-    ++drawn[family];
-    if (ending == Ending::skipped) ++skipped;
-    else ++checked[family];
-    cut_short += ending == Ending::cut_short;
-    if (!failure) continue;
+    // At least as far as the family's boundary: tangent-after-step's tangency is decided at the second step.
+    const std::uint64_t steps = std::max(options.steps, properties::steps_to_decide(families[family]));
+    batch.push_back(Case{c, family, all.world(c, random)});
+    chains.emplace_back(batch.back().world.value(), steps);
+    if (batch.size() == kBatchCases) failed = check_batch();
+  }
+  if (!failed && !batch.empty()) failed = check_batch();
+  if (failed) {
+    const auto& [c, family, drawn_world] = batch[*failed];
+    rc::Shrinkable<Circles> world = drawn_world;
+    const std::uint64_t steps = chains[*failed].steps;
+    std::optional<Failure> failure = std::move(chains[*failed].failure);
     // Shrink: take the first simpler world that still fails, until none does (or the budget is spent).
     const std::size_t circles_before = world.value().size();
     int shrinks = 0, queries = 0;
@@ -261,7 +352,7 @@ int conform(Candidate& candidate, const ConformOptions& options, std::ostream& o
       while (auto next = candidates.next()) {
         if (++queries > kMaxShrinkQueries) break;
         Ending e = Ending::checked;
-        if (auto f = checker.run(next->value(), e)) {
+        if (auto f = checker.run(next->value(), steps, e)) {
           world = *next;
           failure = std::move(f);
           ++shrinks;
@@ -272,7 +363,7 @@ int conform(Candidate& candidate, const ConformOptions& options, std::ostream& o
     }
     const std::string family_name = properties::name(families[family]);
     StoredCounterexample stored{options.profile, failure->input, options.level.text(), family_name, candidate.name(),
-                                options.seed, c, options.steps, failure->step, failure->expected, failure->actual,
+                                options.seed, c, steps, failure->step, failure->expected, failure->actual,
                                 failure->difference};
     report(out, candidate, options, *failure,
            "case " + std::to_string(c) + " of seed " + std::to_string(options.seed) + " (family " + family_name +
@@ -303,8 +394,14 @@ int conform(Candidate& candidate, const ConformOptions& options, std::ostream& o
 
   out << "circles conform: " << candidate.name() << " conforms: " << cases << " cases";
   if (skipped) out << " (" << skipped << " skipped: their next world leaves the double range)";
-  out << ", " << options.steps << " step" << (options.steps == 1 ? "" : "s") << " each, level "
-      << options.level.text() << ", seed " << options.seed << ", " << profile << " profile";
+  out << ", " << options.steps << " step" << (options.steps == 1 ? "" : "s") << " each";
+  std::string longer;  // "tangent-after-step 2": the families chained further, to the step that decides them
+  for (std::size_t f = 0; f < F; ++f)
+    if (checked[f] > 0 && properties::steps_to_decide(families[f]) > options.steps)
+      longer += (longer.empty() ? "" : ", ") + std::string(properties::name(families[f])) + " " +
+                std::to_string(properties::steps_to_decide(families[f]));
+  if (!longer.empty()) out << " (" << longer << ": chained to the step that decides its boundary)";
+  out << ", level " << options.level.text() << ", seed " << options.seed << ", " << profile << " profile";
   if (options.shards > 1) out << ", shard " << options.shard << "/" << options.shards;
   out << "\n";
   if (cases > 0) print_families(out, families, checked);

@@ -5,10 +5,14 @@
 // Cases come in rounds of one case per family of the profile (properties/boundaries.hpp): case c is drawn from
 // family c mod F, F the number of families, with its own random stream split in order from the seed, so case c
 // of a seed is the same world on every run, shard and machine. A shard takes whole rounds, so each shard sees
-// every family. A case chains `steps` steps: the candidate is fed its own outputs, and each answer is checked
-// against the expected answer for the candidate's input (properties::expected_step). A world whose expected
-// answer leaves the double range cannot be asked (the protocol carries finite doubles) and is skipped, and
-// counted; in the literal profile a chain also stops at a world outside the literal domain.
+// every family. A case chains `steps` steps, or as many as its family needs to decide its boundary if more
+// (properties::steps_to_decide: 2 for tangent-after-step): the candidate is fed its own outputs, and each
+// answer is checked against the expected answer for the candidate's input (properties::expected_step). A world
+// whose expected answer leaves the double range cannot be asked (the protocol carries finite doubles) and is
+// skipped, and counted; in the literal profile a chain also stops at a world outside the literal domain.
+// The candidate is asked about up to 64 cases at a time (Candidate::answer_all), in the order and with the ids a
+// case-by-case run would use, so that a candidate program gets several requests per round trip; the verdict,
+// the counterexample and its shrinking are those of the case-by-case run.
 #pragma once
 
 #include "cli/candidate.hpp"
@@ -36,7 +40,7 @@ struct ConformOptions {
   Level level;
   std::uint64_t cases = 1000;
   std::uint64_t seed = 1;
-  std::uint64_t steps = 1;  // steps chained per case
+  std::uint64_t steps = 1;  // steps chained per case (at least properties::steps_to_decide of its family)
   std::uint64_t shard = 0, shards = 1;  // this run checks the rounds q with q mod shards == shard
   std::optional<std::uint64_t> only_case;  // replay one case
   Profile profile = Profile::resolved;

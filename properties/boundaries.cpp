@@ -167,6 +167,8 @@ std::span<const Family> families(Profile profile) {
   return kAll;
 }
 
+std::uint64_t steps_to_decide(Family family) { return family == Family::tangent_after_step ? 2 : 1; }
+
 std::optional<std::string> outside_literal_domain(const Circles& w) {
   if (auto v = first_violation(w)) return std::move(v->reason);
   return std::nullopt;

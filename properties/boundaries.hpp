@@ -12,6 +12,7 @@
 #include <rapidcheck.h>
 
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <string>
@@ -64,6 +65,12 @@ const char* name(Family family);
 // The families a profile draws from, in the order above: all of them for resolved; literal leaves out
 // duplicates and zero_radius, which are outside its domain.
 std::span<const Family> families(Profile profile);
+
+// The steps a chain from a world of `family` needs to reach the family's boundary: 2 for tangent_after_step,
+// whose circles become tangent in w_1, a tangency only the step from w_1 decides; 1 for every other family,
+// whose boundary is in w_0. `circles conform` and step_conforms chain each case at least this far, whatever
+// steps they are asked for, so that the default of one step decides every family's boundary.
+std::uint64_t steps_to_decide(Family family);
 
 namespace gen {
 

@@ -6,6 +6,7 @@
 
 #include <rapidcheck.h>
 
+#include <algorithm>
 #include <bit>
 #include <charconv>
 #include <cmath>
@@ -133,7 +134,8 @@ void step_conforms(const Step& step, const Options& options) {
   const auto [family, w_0] = *gen::boundary_case(options.profile);
   RC_TAG(name(family));
   Circles now = w_0;
-  for (std::uint64_t n = 1; n <= options.steps; ++n) {
+  const std::uint64_t steps = std::max(options.steps, steps_to_decide(family));
+  for (std::uint64_t n = 1; n <= steps; ++n) {
     const auto expected = expected_step(now, options.profile);
     if (!std::holds_alternative<Circles>(expected)) return;
     const Circles actual = step(now);
@@ -141,7 +143,7 @@ void step_conforms(const Step& step, const Options& options) {
       RC_FAIL("step " + std::to_string(n) + ": asked " + std::to_string(now.size()) + " circles, answered " +
               std::to_string(actual.size()));
     if (const auto d = compare(now, std::get<Circles>(expected), actual, options.level)) {
-      RC_LOG() << "family " << name(family) << ", step " << n << " of " << options.steps << ", "
+      RC_LOG() << "family " << name(family) << ", step " << n << " of " << steps << ", "
                << name(options.profile) << " profile, level " << options.level.text() << "\n";
       RC_FAIL("circle " + std::to_string(d->circle) + ", field " + field_name(d->field) + ": expected " +
               hex(d->expected) + ", got " + hex(d->actual) + "; which decision: " + d->decision);

@@ -57,13 +57,15 @@ const char* field_name(int field);  // "px" … "r"
 struct Options {
   Profile profile = Profile::resolved;
   Level level{};
-  std::uint64_t steps = 1;  // chained: each step from the step function's own last answer
+  std::uint64_t steps = 1;  // chained: each step from the step function's own last answer (at least
+                            // steps_to_decide of the world's family)
 };
 
 // The property body: draws a family of `options.profile` and a world of it (gen::boundary_case), tags the case
-// with the family's name (RC_TAG), steps it `options.steps` times with `step` and fails (RC_FAIL, with the
-// circle, the field, expected and actual) at the first answer of the wrong length or that differs from
-// expected_step of its input at `options.level`. A world whose next step has no answer ends the chain there.
+// with the family's name (RC_TAG), steps it `options.steps` times with `step` (steps_to_decide(family) times
+// if more: twice for tangent-after-step, whose tangency is in w_1) and fails (RC_FAIL, with the circle, the
+// field, expected and actual) at the first answer of the wrong length or that differs from expected_step of its
+// input at `options.level`. A world whose next step has no answer ends the chain there.
 void step_conforms(const Step& step, const Options& options = {});
 
 }  // namespace circles::properties

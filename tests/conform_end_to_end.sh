@@ -29,6 +29,13 @@ literal_profile_accepts_the_exact_python_example)
   grep -q "conforms: 300 cases" "$dir/out" || fail "no verdict: $(cat "$dir/out")"
   grep -q "literal profile" "$dir/out" || fail "the profile is not named: $(cat "$dir/out")"
   ;;
+sends_several_requests_before_reading_an_answer)
+  # `circles serve` behind a shell that holds the first request back until it has read the second: conform,
+  # asking one request at a time, would wait past --timeout for the first answer and exit 2.
+  run_conform 0 --cases 170 --seed 1 --timeout 2 \
+    --exec "{ read -r a; read -r b; printf '%s\n%s\n' \"\$a\" \"\$b\"; exec cat; } | '$circles' serve --engine double"
+  grep -q "conforms: 170 cases" "$dir/out" || fail "no verdict: $(cat "$dir/out")"
+  ;;
 exits_2_naming_an_unknown_profile)
   run_conform 2 --profile sideways
   [ "$(cat "$dir/err")" = 'circles conform: --profile: "sideways" is not resolved or literal' ] ||

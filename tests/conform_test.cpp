@@ -19,6 +19,7 @@
 #include <functional>
 #include <limits>
 #include <regex>
+#include <set>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -27,6 +28,7 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include "impl/predicate.hpp"
 #include "impl/rounding.hpp"
 #include "properties/boundaries.hpp"
 #include "spec/oracle.hpp"
@@ -49,18 +51,14 @@ class FunctionCandidate : public Candidate {
   std::function<Circles(const Circles&)> step_;
 };
 
-// The oracle with (3) decided by < instead of <=: wrong exactly at tangency.
-Circles strict_intersect_step(const Circles& w) {
+// The resolved step with the contacts `touches(k, j)` decides: each circle takes the velocity of the least.
+Circles step_with_contacts(const Circles& w, const std::function<bool(std::size_t, std::size_t)>& touches) {
   Circles out = w;
   for (std::size_t k = 0; k < w.size(); ++k) {
     std::size_t least = k;
-    for (std::size_t j = 0; j < w.size(); ++j) {
-      if (j == k) continue;
-      const spec::Q dx = spec::exact(w[j][0]) - spec::exact(w[k][0]), dy = spec::exact(w[j][1]) - spec::exact(w[k][1]);
-      const spec::Q s = spec::exact(w[k][4]) + spec::exact(w[j][4]);
-      if (s * s > dx * dx + dy * dy && (least == k || std::make_pair(w[j], j) < std::make_pair(w[least], least)))
+    for (std::size_t j = 0; j < w.size(); ++j)
+      if (j != k && touches(k, j) && (least == k || std::make_pair(w[j], j) < std::make_pair(w[least], least)))
         least = j;
-    }
     out[k][2] = w[least][2];
     out[k][3] = w[least][3];
     out[k][0] = impl::advance_rounded(w[k][0], out[k][2]);
@@ -68,6 +66,42 @@ Circles strict_intersect_step(const Circles& w) {
   }
   return out;
 }
+
+// The oracle with (3) decided by < instead of <=: wrong exactly at tangency.
+Circles strict_intersect_step(const Circles& w) {
+  return step_with_contacts(w, [&](std::size_t k, std::size_t j) {
+    const spec::Q dx = spec::exact(w[j][0]) - spec::exact(w[k][0]), dy = spec::exact(w[j][1]) - spec::exact(w[k][1]);
+    const spec::Q s = spec::exact(w[k][4]) + spec::exact(w[j][4]);
+    return s * s > dx * dx + dy * dy;
+  });
+}
+
+// A step that keeps its contact list from one request to the next, as a neighbour list that is never rebuilt:
+// asked its own last answer back (the next step of a chain), it tests only the pairs that touched in the world
+// before; asked any other world, it finds the pairs anew. So it is right at the first step of every chain, and
+// wrong where two circles come into contact after a move: two circles that become tangent in w_1.
+class StaleContacts : public Candidate {
+ public:
+  Circles answer(const Circles& w, std::uint64_t) override {
+    const auto touch = [&](std::size_t k, std::size_t j) {
+      return impl::intersect_exact(w[k][0], w[k][1], w[k][4], w[j][0], w[j][1], w[j][4]);
+    };
+    if (w != last_answer_) {
+      pairs_.clear();
+      for (std::size_t k = 0; k < w.size(); ++k)
+        for (std::size_t j = 0; j < w.size(); ++j)
+          if (j != k && touch(k, j)) pairs_.emplace(k, j);
+    }
+    last_answer_ =
+        step_with_contacts(w, [&](std::size_t k, std::size_t j) { return pairs_.contains({k, j}) && touch(k, j); });
+    return last_answer_;
+  }
+  std::string name() const override { return "the step with a stale contact list"; }
+
+ private:
+  Circles last_answer_;
+  std::set<std::pair<std::size_t, std::size_t>> pairs_;
+};
 
 std::string run(Candidate& candidate, ConformOptions options, int& status) {
   std::ostringstream out;
@@ -154,6 +188,39 @@ TEST(conform, rejects_a_strict_intersect_with_a_counterexample_shrunk_to_two_tan
   EXPECT_NE(report.find("replay: --seed 7 --case "), std::string::npos) << report;
 }
 
+// The tangent-after-step family's circles become tangent in w_1, so its tangency is decided at the second step:
+// its cases are chained two steps even when one is asked for (the default), and a step that is wrong only there
+// is caught at the default budget, in that family.
+TEST(conform, chains_the_tangent_after_step_family_to_the_step_that_decides_its_tangency) {
+  StaleContacts stale;
+  int status = -1;
+  ConformOptions defaults;  // 1000 cases, one step, level exact, resolved profile
+  defaults.seed = 5;
+  const std::string report = run(stale, defaults, status);
+  EXPECT_EQ(status, 1) << report;
+  EXPECT_NE(report.find("(family tangent-after-step)"), std::string::npos) << report;
+  EXPECT_NE(report.find("  step 2 of 2, circle "), std::string::npos) << report;
+  EXPECT_NE(report.find("which decision: intersect (3): circle"), std::string::npos) << report;
+  EXPECT_NE(report.find("but kept its own velocity"), std::string::npos) << report;
+  EXPECT_NE(report.find("the world asked (the candidate's own last answer)"), std::string::npos) << report;
+  // Its first steps are right: the cases of every other family, chained one step, pass.
+  const auto families = properties::families(Profile::resolved);
+  const std::uint64_t F = families.size();
+  ConformOptions one_case = defaults;
+  for (std::uint64_t c = 0; c < 10 * F; ++c) {
+    if (families[c % F] == properties::Family::tangent_after_step) continue;
+    one_case.only_case = c;
+    const std::string one = run(stale, one_case, status);
+    EXPECT_EQ(status, 0) << one;
+  }
+  // A run that passes says how far the family was chained.
+  EngineCandidate double_engine(engine("double"), 1);
+  EXPECT_NE(run(double_engine, defaults, status)
+                .find(", 1 step each (tangent-after-step 2: chained to the step that decides its boundary), level exact"),
+            std::string::npos);
+  EXPECT_EQ(status, 0);
+}
+
 TEST(conform, shards_take_whole_rounds_of_every_family_without_overlap) {
   // Cases come in rounds of one per family; shard i/n takes the rounds q with q mod n = i. With the 17
   // families of the resolved profile, 100 cases are rounds 0 … 4 (17 each) and 15 cases of round 5: shard
@@ -168,8 +235,10 @@ TEST(conform, shards_take_whole_rounds_of_every_family_without_overlap) {
   const std::string first_report = run(counting, ConformOptions{{0}, 100, 3, 1, 0, 2, {}}, status);
   const std::uint64_t first = asked;
   run(counting, ConformOptions{{0}, 100, 3, 1, 1, 2, {}}, status);
-  EXPECT_EQ(first, 51u);
-  EXPECT_EQ(asked, 100u);
+  // One request per case, and a second for each case of tangent-after-step (family 11, chained two steps):
+  // 3 of them in each shard.
+  EXPECT_EQ(first, 51u + 3);
+  EXPECT_EQ(asked, 100u + 6);
   // Each shard saw every family: three cases of each in shard 0.
   EXPECT_NE(first_report.find("lattice 3, random-doubles 3, tangency 3,"), std::string::npos) << first_report;
 }
@@ -512,6 +581,70 @@ TEST(conform, refuses_broken_programs_with_what_they_did) {
   ASSERT_TRUE(e);
   EXPECT_EQ(std::string(e->what()),
             "the program `cat >/dev/null; sleep 30` did not exit within 0.2 s of the end of its input (it was stopped)");
+}
+
+// A program is sent a batch of requests before conform reads their answers: one that answers only after it has
+// read two requests is answered, not waited on until the deadline (which is what asking one request at a time
+// would get: "gave no answer to request 7"). Messages still name the request of the batch they concern.
+// A program that crashes right after its first wrong answer, before answering the rest of its batch: the
+// strict (3) step, with answer_all stopping at the first answer that differs from the resolved step. Conform
+// judges the answers it has before the fault, so the verdict is the counterexample, exit 1, as a case-by-case
+// run gives; reporting the crash, exit 2, would hide a wrong answer behind a fault it provoked.
+class CrashesAfterItsFirstWrongAnswer : public FunctionCandidate {
+ public:
+  CrashesAfterItsFirstWrongAnswer() : FunctionCandidate(strict_intersect_step) {}
+  Answers answer_all(std::span<const Circles> worlds, std::uint64_t first_id) override {
+    Answers read = Candidate::answer_all(worlds, first_id);
+    for (std::size_t i = 0; i + 1 < read.answers.size(); ++i) {
+      const auto expected = properties::expected_step(worlds[i], Profile::resolved);
+      if (std::holds_alternative<Circles>(expected) && std::get<Circles>(expected) != read.answers[i]) {
+        read.answers.resize(i + 1);
+        read.broken = BrokenCandidate("the program crashed after request " + std::to_string(first_id + i));
+        ++crashes;
+        break;
+      }
+    }
+    return read;
+  }
+  int crashes = 0;
+};
+
+TEST(conform, judges_the_answers_before_a_fault_in_a_batch_and_reports_the_counterexample) {
+  CrashesAfterItsFirstWrongAnswer candidate;
+  int status = -1;
+  const std::string report = run(candidate, ConformOptions{}, status);
+  EXPECT_EQ(status, 1) << report;
+  EXPECT_NE(report.find("does not conform"), std::string::npos) << report;
+  EXPECT_GE(candidate.crashes, 1);  // the fault happened, inside a batch
+}
+
+TEST(conform, sends_a_program_several_requests_before_reading_their_answers) {
+  const std::vector<Circles> worlds{{}, {{0, 0, 1, 0, 1}}};
+  const auto answers = [&](const std::string& second_answer) -> std::string {
+    ProcessCandidate candidate("read a; read b; echo '{\"id\": 7, \"circles\": []}'; echo '" + second_answer + "'",
+                               300ms);
+    try {
+      return candidate.answer_all(worlds, 7).all() == std::vector<Circles>{{}, {{2, 0, 1, 0, 1}}} ? "answered" : "wrong answers";
+    } catch (const BrokenCandidate& e) {
+      return e.what();
+    }
+  };
+  EXPECT_EQ(answers("{\"id\": 8, \"circles\": [[2, 0, 1, 0, 1]]}"), "answered");
+  EXPECT_EQ(answers("{\"id\": 9, \"circles\": []}"),
+            "the program `read a; read b; echo '{\"id\": 7, \"circles\": []}'; echo '{\"id\": 9, \"circles\": []}'` "
+            "answered request 8 with id 9");
+}
+
+// More requests than a batch's bytes (ProcessCandidate::kBatchBytes) go in several batches, answered in order:
+// `cat` echoes each line as it reads it, so a batch written whole, unbounded, would fill both pipes and hang.
+TEST(conform, splits_requests_into_batches_a_program_echoing_them_answers_in_order) {
+  std::vector<Circles> worlds;
+  for (int k = 0; k < 2000; ++k) worlds.push_back(Circles(1 + k % 8, {k * 0.1, -k * 1e-300, 1.0 / (k + 1), 3.5, 1}));
+  ProcessCandidate cat("exec cat", 10s);
+  const std::vector<Circles> echoed = cat.answer_all(worlds, 1).all();
+  EXPECT_EQ(echoed, worlds);
+  EXPECT_EQ(cat.answer(worlds[5], 2001), worlds[5]);  // ids go on where the batches left them
+  cat.finish();
 }
 
 TEST(conform, leaves_no_process_behind_even_when_the_program_starts_others) {
