@@ -31,6 +31,10 @@ class ImplStepper final : public Stepper {
   ImplStepper(const Circles& world, unsigned threads)
       : engine_(impl::World(world), impl::EngineOptions{.threads = threads}) {}
   Circles circles() const override { return engine_.world().circles(); }
+  std::optional<spec::Sequence> exact() const override {
+    if constexpr (requires { engine_.exact(); }) return engine_.exact();
+    return std::nullopt;
+  }
 
  private:
   std::optional<Overflow> advance() override {
@@ -74,6 +78,7 @@ class ExactOracleStepper final : public Stepper {
     for (const spec::Circle& c : world_) out.push_back(spec::nearest_doubles(c));
     return out;
   }
+  std::optional<spec::Sequence> exact() const override { return world_; }
 
  private:
   std::optional<Overflow> advance() override {

@@ -8,6 +8,7 @@
 #pragma once
 
 #include "cli/protocol.hpp"
+#include "spec/oracle.hpp"  // spec::Sequence
 #include "spec/outside_c.hpp"
 
 #include <cstddef>
@@ -44,6 +45,9 @@ class Stepper {
   void step();
   std::uint64_t steps() const noexcept { return steps_; }
   virtual Circles circles() const = 0;
+  // w_steps() itself, as rationals, from an engine that keeps the exact sequence (EngineEntry::exact); nullopt
+  // from one that keeps only doubles.
+  virtual std::optional<spec::Sequence> exact() const { return std::nullopt; }
 
  protected:
   struct Overflow {

@@ -109,6 +109,10 @@ int main(int argc, char** argv) {
   add_engine_options(run, engine_name, threads);
   run->add_option("--trace", trace,
                   "Write every world to this file, one JSON line {\"step\": t, \"circles\": [...]} each");
+  std::string exact_trace;
+  run->add_option("--exact-trace", exact_trace,
+                  "With --engine exact: write every world's exact state to this file, the lines of --trace with "
+                  "each number the rational \"n/d\"");
   std::string render_dir, video;
   std::uint64_t every = 1;
   bool fit = false, stats = false;
@@ -245,6 +249,12 @@ int main(int argc, char** argv) {
         return 2;
       }
       RunOptions options{run_steps, &engine(engine_name), threads, trace};
+      if (!exact_trace.empty() && !options.engine->exact) {
+        std::cerr << "circles run: --exact-trace: the " << engine_name
+                  << " engine keeps no exact state; the exact sequence is --engine exact's\n";
+        return 2;
+      }
+      options.exact_trace = exact_trace;
       options.render = render_dir;
       options.every = every;
       options.video = video;
@@ -260,6 +270,7 @@ int main(int argc, char** argv) {
       if (!result.overflow) return 0;
       std::cerr << "circles run: " << result.overflow->what() << "; stopped after " << result.steps << " steps";
       if (!trace.empty()) std::cerr << ", and the trace " << trace << " holds w_0 to w_" << result.steps;
+      if (!exact_trace.empty()) std::cerr << ", and the exact trace " << exact_trace << " w_0 to w_" << result.steps;
       if (!render_dir.empty() || !video.empty())
         std::cerr << (trace.empty() ? ", and " : "; ") << "the frames"
                   << (video.empty() ? "" : " of " + video) << (render_dir.empty() ? "" : " in " + render_dir)

@@ -4,6 +4,7 @@
 #include "cli/progress.hpp"
 #include "cli/protocol.hpp"
 #include "cli/render.hpp"
+#include "cli/vectors.hpp"  // append_exact_world
 #include "cli/video.hpp"
 
 #include <algorithm>
@@ -25,6 +26,14 @@ Circles doubles_of(const Scene& scene) { return doubles_of(scene.circles); }
 
 using Clock = std::chrono::steady_clock;
 
+void append_exact_line(std::string& out, std::uint64_t step, const spec::Sequence& w) {
+  out += "{\"step\":";
+  out += std::to_string(step);
+  out += ",\"circles\":";
+  append_exact_world(out, w);
+  out += '}';
+}
+
 RunResult run(const Circles& world, const RunOptions& options) {
   if (options.every == 0) throw std::invalid_argument("RunOptions::every: a frame every 0 steps");
   const auto started = Clock::now();
@@ -33,8 +42,12 @@ RunResult run(const Circles& world, const RunOptions& options) {
   // no file and no directory behind.
   std::optional<Video> video;
   if (!options.video.empty()) video.emplace(options.video);
-  std::optional<OutputFile> trace;
+  if (!options.exact_trace.empty() && !options.engine->exact)
+    throw std::invalid_argument("--exact-trace: the " + std::string(options.engine->name) +
+                                " engine keeps no exact state (only --engine exact does)");
+  std::optional<OutputFile> trace, exact_trace;
   if (!options.trace.empty()) trace.emplace(options.trace, "trace " + options.trace);
+  if (!options.exact_trace.empty()) exact_trace.emplace(options.exact_trace, "exact trace " + options.exact_trace);
   std::optional<FrameDirectory> frames;
   if (!options.render.empty()) frames.emplace(options.render);
   const bool pictures = video || frames, fit = pictures && options.fit;
@@ -62,13 +75,21 @@ RunResult run(const Circles& world, const RunOptions& options) {
   std::optional<Frame> frame;
   if (pictures) frame.emplace();
   std::string line;
-  const auto record = [&](std::uint64_t t, const Circles& w) {
+  const auto record = [&](std::uint64_t t, const Circles& w, const Stepper& stepper) {
     auto begin = Clock::now();
     if (trace) {
       line.clear();
       append_line(line, kStep, t, w);
       line += '\n';
       trace->write(line);
+    }
+    if (exact_trace) {
+      line.clear();
+      append_exact_line(line, t, *stepper.exact());
+      line += '\n';
+      exact_trace->write(line);
+    }
+    if (trace || exact_trace) {
       const auto end = Clock::now();
       result.tracing += end - begin;
       begin = end;
@@ -92,7 +113,7 @@ RunResult run(const Circles& world, const RunOptions& options) {
   };
 
   const auto stepper = options.engine->start(world, options.threads);
-  record(0, world);
+  record(0, world, *stepper);
   const unsigned pass = fit ? 1 : 0;
   while (result.steps < options.steps) {
     const auto start = Clock::now();
@@ -105,16 +126,17 @@ RunResult run(const Circles& world, const RunOptions& options) {
     const auto stepped = Clock::now();
     result.stepping += stepped - start;
     result.steps = stepper->steps();
-    if (trace || (pictures && result.steps % options.every == 0)) {
-      record(result.steps, stepper->circles());
+    if (trace || exact_trace || (pictures && result.steps % options.every == 0)) {
+      record(result.steps, stepper->circles(), *stepper);
       progress.update(pass, result.steps, Clock::now());
     } else {
       progress.update(pass, result.steps, stepped);
     }
   }
-  if (trace) {
+  if (trace || exact_trace) {
     const auto begin = Clock::now();
-    trace->commit();
+    if (trace) trace->commit();
+    if (exact_trace) exact_trace->commit();
     result.tracing += Clock::now() - begin;
   }
   if (video) {
@@ -149,6 +171,9 @@ void print_summary(const RunResult& result, std::size_t circles, const RunOption
   out << "\n";
   if (!options.trace.empty())
     out << "trace: " << options.trace << " (w_0 to w_" << result.steps << ", " << result.steps + 1 << " lines)\n";
+  if (!options.exact_trace.empty())
+    out << "exact trace: " << options.exact_trace << " (w_0 to w_" << result.steps << ", " << result.steps + 1
+        << " lines, as rationals)\n";
   const std::uint64_t every = std::max<std::uint64_t>(options.every, 1);
   if (!options.render.empty()) {
     out << "frames: " << frame_path(options.render, 0) << " to "

@@ -29,6 +29,7 @@ struct RunOptions {
   const EngineEntry* engine = nullptr;
   unsigned threads = 0;     // 0: all cores
   std::string trace{};      // the trace file, or empty for none
+  std::string exact_trace{};  // --exact-trace FILE: the exact worlds as rationals (an exact engine only), or empty
   std::string render{};     // --render DIR: the directory of the PNG frames, or empty for none
   std::uint64_t every = 1;  // --every K: a frame of w_t for each t that is a multiple of K (K >= 1)
   std::string video{};      // --video FILE.mp4, or empty for none
@@ -57,12 +58,18 @@ struct RunResult {
 // options.every (w_0 first; the last world is drawn only when its step is such a multiple) and writes it as
 // DIR/frame_name(t) and as the next frame of the video; after an overflow the video is kept too, with the
 // frames before it. With --fit, a first pass steps the same engine from w_0 without drawing to find the box
-// of every frame's circles (the engines are deterministic, so the second pass meets the same worlds).
+// of every frame's circles (the engines are deterministic, so the second pass meets the same worlds). With an
+// exact trace (an engine whose EngineEntry::exact is set, else std::invalid_argument), writes the same lines
+// with each number the exact rational "n/d" (a string, d > 0, in lowest terms: docs/run.md), as the trace is.
 //
 // Every output is checked before the first step: the name of the video and ffmpeg (VideoError), the trace's
 // and the video's temporary files and the frames' directory (OutputError). A failure leaves no trace and no
 // video file behind; frames already written stay, each a complete PNG.
 RunResult run(const Circles& world, const RunOptions& options);
+
+// {"step":t,"circles":[["px","py","vx","vy","r"],...]} without a newline, each number the exact "n/d" of
+// cli::fraction (cli::append_exact_world): a line of --exact-trace.
+void append_exact_line(std::string& out, std::uint64_t step, const spec::Sequence& w);
 
 // "100 steps of 10 circles with the double engine (all cores): 0.000135 s stepping, 135 ns per circle-step",
 // then a line for each output: "trace: t.jsonl (w_0 to w_100, 101 lines)", "frames: f/frame-000000.png to

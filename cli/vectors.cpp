@@ -82,6 +82,8 @@ std::string fraction(const spec::Q& q) {
   return boost::multiprecision::numerator(q).str() + "/" + boost::multiprecision::denominator(q).str();
 }
 
+void append_exact_world(std::string& out, const std::vector<spec::Circle>& w) { append_rows(out, w, append_fraction); }
+
 std::string hash_text(std::uint64_t hash) {
   std::ostringstream out;
   out << std::hex << std::setw(16) << std::setfill('0') << hash;
@@ -130,7 +132,7 @@ std::string format_vector(std::size_t index, const Vector& v) {
   out += ",\"input_hex\":";
   append_rows(out, v.input, append_hex);
   out += ",\"input_hash\":\"" + hash_text(impl::state_hash(v.input)) + "\",\"next_exact\":";
-  append_rows(out, v.next_exact, append_fraction);
+  append_exact_world(out, v.next_exact);
   out += ",\"next\":";
   append_rows(out, v.next, append_decimal);
   out += ",\"next_hex\":";

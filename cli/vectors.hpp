@@ -68,6 +68,10 @@ std::string format_vector(std::size_t index, const Vector& v);
 // "n/d" in lowest terms, d >= 1, also for integers ("3/1", "0/1").
 std::string fraction(const spec::Q& q);
 
+// Appends [["px","py","vx","vy","r"], ...], each number its fraction() as a JSON string: a world as rationals,
+// as a vector's next exact world and a line of `circles run --exact-trace` hold it.
+void append_exact_world(std::string& out, const std::vector<spec::Circle>& w);
+
 // The 16 lowercase hexadecimal digits of a state hash.
 std::string hash_text(std::uint64_t hash);
 

@@ -12,6 +12,7 @@
 #include "tests/thrown.hpp"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <rapidcheck.h>
 #include <rapidcheck/gtest.h>
 
@@ -244,6 +245,51 @@ TEST(run, keeps_the_trace_of_every_step_before_an_overflow) {
   ASSERT_EQ(lines.size(), 4u);
   for (std::size_t t = 0; t < lines.size(); ++t) EXPECT_EQ(parse_line(lines[t], t + 1, kStep).circles, want[t]);
   EXPECT_EQ(dir.files(), std::vector<std::string>{"t.jsonl"});
+}
+
+// The exact state written by --exact-trace, read back with GMP's own parser of "n/d" (not our formatter):
+// world t must be the oracle's exact w_t. kTouching's circles move by ±1/60, which no double holds, so a trace
+// of rounded values would differ from step 1 on.
+TEST(run, writes_the_exact_engines_state_as_the_oracles_exact_rationals) {
+  TempDir dir;
+  const auto exact_trace = dir.path / "x.jsonl";
+  RunOptions options{5, &engine("exact"), 1, ""};
+  options.exact_trace = exact_trace.string();
+  const RunResult result = run(kTouching, options);
+  EXPECT_EQ(result.steps, 5u);
+  spec::Sequence want;
+  for (std::size_t k = 0; k < kTouching.size(); ++k)
+    want.push_back(spec::from_doubles(kTouching[k], k, spec::Radii::non_negative));
+  const auto lines = lines_of(exact_trace);
+  ASSERT_EQ(lines.size(), 6u);
+  for (std::size_t t = 0; t < lines.size(); ++t) {
+    const nlohmann::json line = nlohmann::json::parse(lines[t]);
+    EXPECT_EQ(line.at("step"), t);
+    ASSERT_EQ(line.at("circles").size(), want.size());
+    for (std::size_t k = 0; k < want.size(); ++k) {
+      const spec::Circle& c = want[k];
+      const spec::Q* fields[] = {&c.p.x(), &c.p.y(), &c.v.x(), &c.v.y(), &c.r};
+      for (std::size_t f = 0; f < 5; ++f)
+        EXPECT_EQ(spec::Q(line.at("circles")[k][f].get<std::string>()), *fields[f]) << "step " << t << ", circle " << k;
+    }
+    want = spec::resolved_step(want);
+  }
+  // Circle 0 touches circle 1 in w_0, takes its velocity −1 and moves to −1/60, a value no double holds.
+  EXPECT_EQ(spec::Q(nlohmann::json::parse(lines[1]).at("circles")[0][0].get<std::string>()), spec::Q(-1, 60));
+  EXPECT_EQ(dir.files(), std::vector<std::string>{"x.jsonl"}) << "a temporary file was left behind";
+}
+
+TEST(run, refuses_an_exact_trace_from_an_engine_without_exact_state_before_writing_anything) {
+  for (const char* name : {"double", "oracle"}) {
+    TempDir dir;
+    RunOptions options{3, &engine(name), 1, (dir.path / "t.jsonl").string()};
+    options.exact_trace = (dir.path / "x.jsonl").string();
+    const auto e = thrown<std::invalid_argument>([&] { run(kTouching, options); });
+    ASSERT_TRUE(e) << name;
+    EXPECT_EQ(std::string(e->what()), "--exact-trace: the " + std::string(name) +
+                                          " engine keeps no exact state (only --engine exact does)");
+    EXPECT_TRUE(dir.files().empty()) << name;
+  }
 }
 
 TEST(run, runs_without_a_trace) {
