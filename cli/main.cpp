@@ -249,11 +249,6 @@ int main(int argc, char** argv) {
         return 2;
       }
       RunOptions options{run_steps, &engine(engine_name), threads, trace};
-      if (!exact_trace.empty() && !options.engine->exact) {
-        std::cerr << "circles run: --exact-trace: the " << engine_name
-                  << " engine keeps no exact state; the exact sequence is --engine exact's\n";
-        return 2;
-      }
       options.exact_trace = exact_trace;
       options.render = render_dir;
       options.every = every;
@@ -263,7 +258,13 @@ int main(int argc, char** argv) {
       if (isatty(STDERR_FILENO)) options.progress = &std::cerr;
       if (run->count("--steps") == 0 && scene.steps) options.steps = *scene.steps;
       const Circles world = random ? random_world(n, coverage, seed, run_bytes_per_circle(engine_name)) : doubles_of(scene);
-      const RunResult result = circles::cli::run(world, options);
+      RunResult result;
+      try {
+        result = circles::cli::run(world, options);
+      } catch (const std::invalid_argument& e) {  // options run() refuses before any output, e.g. --exact-trace
+        std::cerr << "circles run: " << e.what() << "\n";
+        return 2;
+      }
       std::cout << "circles run: " << scene_name << ": ";
       print_summary(result, world.size(), options, std::cout);
       if (stats) print_stats(result, world.size(), options, std::cout);
