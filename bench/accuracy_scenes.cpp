@@ -49,19 +49,27 @@ Scene cradle() {
   return s;
 }
 
-// A 16 × 16 lattice of radius 5 at spacing 10, so every circle touches its four neighbours exactly, with
-// integer velocities drawn uniformly from [−100, 100] (std::mt19937_64, whose sequence the standard fixes;
-// the draw is (x >> 11) mod 201, written here): most moves are k/60, which no double holds.
-Scene dense() {
-  Scene s{"dense", "dense: a 16 x 16 lattice of touching circles with random integer velocities", 1000, {}, {}, {}};
-  std::mt19937_64 random(2024);
-  const auto draw = [&] { return static_cast<double>(static_cast<int>((random() >> 11) % 201) - 100); };
-  for (int j = 0; j < 16; ++j)
-    for (int i = 0; i < 16; ++i) {
+// Appends an n × n lattice of circles of radius r, (x0 + spacing·i, y0 + spacing·j) row by row, each with an
+// integer velocity (vx, then vy) drawn uniformly from [−limit, limit] by std::mt19937_64(seed): the standard
+// fixes that generator's sequence, and the draw, (x >> 11) mod (2·limit + 1), is written here rather than left
+// to a library's distribution, so the scene is the same everywhere.
+void add_lattice(Scene& s, int n, double x0, double y0, double spacing, double r, std::uint64_t seed, int limit) {
+  std::mt19937_64 random(seed);
+  const auto span = static_cast<std::uint64_t>(2 * limit + 1);
+  const auto draw = [&] { return static_cast<double>(static_cast<int>((random() >> 11) % span) - limit); };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
       const double vx = draw();
       const double vy = draw();
-      s.circles.push_back({10.0 * i, 10.0 * j, vx, vy, 5});
+      s.circles.push_back({x0 + spacing * i, y0 + spacing * j, vx, vy, r});
     }
+}
+
+// A 16 × 16 lattice of radius 5 at spacing 10, so every circle touches its four neighbours exactly, with
+// integer velocities in [−100, 100] (seed 2024): most moves are k/60, which no double holds.
+Scene dense() {
+  Scene s{"dense", "dense: a 16 x 16 lattice of touching circles with random integer velocities", 1000, {}, {}, {}};
+  add_lattice(s, 16, 0, 0, 10, 5, 2024, 100);
   return s;
 }
 
@@ -235,14 +243,7 @@ Scene clusters() {
     s.circles.push_back({3000 + 682.5 * a / c, 682.5 * b / c, -65 * a / c, -65 * b / c, 2.5});
     s.designed.push_back({static_cast<std::uint32_t>(s.circles.size() - 1), centre, 600, 0});
   }
-  std::mt19937_64 random(7);
-  const auto draw = [&] { return static_cast<double>(static_cast<int>((random() >> 11) % 61) - 30); };
-  for (int j = 0; j < 10; ++j)
-    for (int i = 0; i < 10; ++i) {
-      const double vx = draw();
-      const double vy = draw();
-      s.circles.push_back({0.0 + i, 3000.0 + j, vx, vy, 2});
-    }
+  add_lattice(s, 10, 0, 3000, 1, 2, 7, 30);
   return s;
 }
 

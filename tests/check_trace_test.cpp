@@ -7,6 +7,7 @@
 #include "cli/scene.hpp"
 #include "cli/trace_reader.hpp"
 #include "impl/state_hash.hpp"
+#include "tests/temp_dir.hpp"
 #include "tests/thrown.hpp"
 
 #include <gtest/gtest.h>
@@ -27,19 +28,7 @@ namespace {
 namespace fs = std::filesystem;
 using circles::testing::thrown;
 
-// A fresh directory for one test's files, removed at the end.
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    std::string name = (fs::temp_directory_path() / "circles-check-trace-test-XXXXXX").string();
-    path = mkdtemp(name.data()) ? name : throw std::runtime_error("mkdtemp failed");
-  }
-  ~TempDir() { fs::remove_all(path); }
-  std::string write(const std::string& name, const std::string& bytes) const {
-    std::ofstream(path / name, std::ios::binary) << bytes;
-    return (path / name).string();
-  }
-};
+using circles::testing::TempDir;
 
 std::vector<std::string> lines_of(const std::string& file) {
   std::ifstream in(file);

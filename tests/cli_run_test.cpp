@@ -9,6 +9,7 @@
 
 #include "properties/generators.hpp"
 #include "spec/oracle.hpp"
+#include "tests/temp_dir.hpp"
 #include "tests/thrown.hpp"
 
 #include <gtest/gtest.h>
@@ -68,20 +69,7 @@ std::vector<std::string> lines_of(const std::filesystem::path& file) {
   return lines;
 }
 
-// A fresh directory for one test's files, removed at the end.
-struct TempDir {
-  std::filesystem::path path;
-  TempDir() {
-    std::string name = (std::filesystem::temp_directory_path() / "circles-cli-test-XXXXXX").string();
-    path = mkdtemp(name.data()) ? name : throw std::runtime_error("mkdtemp failed");
-  }
-  ~TempDir() { std::filesystem::remove_all(path); }
-  std::vector<std::string> files() const {
-    std::vector<std::string> names;
-    for (const auto& e : std::filesystem::directory_iterator(path)) names.push_back(e.path().filename().string());
-    return names;
-  }
-};
+using circles::testing::TempDir;
 
 TEST(engines, lists_the_double_engine_the_exact_engine_and_the_oracle) {
   EXPECT_EQ(engine_names(), "double, exact, oracle");

@@ -32,11 +32,13 @@
 #include "impl/rounding.hpp"
 #include "properties/boundaries.hpp"
 #include "spec/oracle.hpp"
+#include "tests/temp_dir.hpp"
 #include "tests/thrown.hpp"
 
 namespace circles::cli {
 namespace {
 
+using circles::testing::TempDir;
 using circles::testing::thrown;
 using namespace std::chrono_literals;
 
@@ -324,21 +326,6 @@ TEST(conform, the_literal_profile_refuses_a_step_that_ignores_the_product_order)
 
 // ── Counterexamples as files: --save and --svg ─────────────────────────────────────────────────────────
 
-class TemporaryDirectory {
- public:
-  TemporaryDirectory()
-      : path_(std::filesystem::temp_directory_path() /
-              ("circles-conform-test-" + std::to_string(::getpid()) + "-" + std::to_string(next_++))) {
-    std::filesystem::remove_all(path_);
-  }
-  ~TemporaryDirectory() { std::filesystem::remove_all(path_); }
-  const std::filesystem::path& path() const { return path_; }
-
- private:
-  static inline int next_ = 0;
-  std::filesystem::path path_;
-};
-
 std::vector<std::filesystem::path> files_in(const std::filesystem::path& dir, const std::string& extension) {
   std::vector<std::filesystem::path> files;
   if (std::filesystem::is_directory(dir))
@@ -348,14 +335,15 @@ std::vector<std::filesystem::path> files_in(const std::filesystem::path& dir, co
 }
 
 TEST(conform, saves_a_counterexample_with_its_picture_and_replays_it_first_on_every_run) {
-  const TemporaryDirectory corpus;
+  const TempDir dir;
+  const std::filesystem::path corpus = dir.path / "corpus";  // --save makes it
   FunctionCandidate wrong(strict_intersect_step);
   ConformOptions options{{0}, 1000, 7, 1, 0, 1, {}};
-  options.save = corpus.path();
+  options.save = corpus;
   int status = -1;
   const std::string first = run(wrong, options, status);
   EXPECT_EQ(status, 1) << first;
-  const auto saved = files_in(corpus.path(), ".json");
+  const auto saved = files_in(corpus, ".json");
   ASSERT_EQ(saved.size(), 1u) << first;
   EXPECT_NE(first.find("saved: " + saved[0].string()), std::string::npos) << first;
   const std::filesystem::path picture = saved[0].parent_path() / (saved[0].stem().string() + ".svg");
@@ -363,7 +351,7 @@ TEST(conform, saves_a_counterexample_with_its_picture_and_replays_it_first_on_ev
   EXPECT_NE(first.find("picture: " + picture.string()), std::string::npos) << first;
 
   // The file holds the shrunk world, which the wrong step still gets wrong and the right one right.
-  const auto stored = load_corpus(corpus.path());
+  const auto stored = load_corpus(corpus);
   ASSERT_EQ(stored.size(), 1u);
   const StoredCounterexample& c = stored[0].second;
   EXPECT_EQ(c.seed, 7u);
@@ -383,14 +371,14 @@ TEST(conform, saves_a_counterexample_with_its_picture_and_replays_it_first_on_ev
                         std::to_string(*c.case_index) + " of seed 7, family "),
             std::string::npos)
       << second;
-  EXPECT_NE(second.find("replay: --save " + corpus.path().string()), std::string::npos) << second;
-  EXPECT_EQ(files_in(corpus.path(), ".json").size(), 1u);  // not saved twice
+  EXPECT_NE(second.find("replay: --save " + corpus.string()), std::string::npos) << second;
+  EXPECT_EQ(files_in(corpus, ".json").size(), 1u);  // not saved twice
 
   // A right step passes it, and says so.
   FunctionCandidate right([](const Circles& w) { return spec::resolved_step_rounded(w); });
   const std::string third = run(right, options, status);
   EXPECT_EQ(status, 0) << third;
-  EXPECT_NE(third.find("corpus: 1 stored counterexample replayed from " + corpus.path().string()), std::string::npos)
+  EXPECT_NE(third.find("corpus: 1 stored counterexample replayed from " + corpus.string()), std::string::npos)
       << third;
 }
 
@@ -467,23 +455,21 @@ TEST(conform, refuses_corpus_files_it_cannot_replay_naming_the_file_and_the_plac
   EXPECT_EQ(error(head + R"("world": [], "seed": -1})"), "F.json: key \"seed\": expected an integer >= 0, found -1");
 
   // In a directory, the file is named by its path, and a run with --save stops before any case.
-  const TemporaryDirectory corpus;
-  std::filesystem::create_directories(corpus.path());
-  std::ofstream(corpus.path() / "bad.json") << "{";
+  const TempDir corpus;
+  corpus.write("bad.json", "{");
   EngineCandidate engine_candidate(engine("double"), 1);
   ConformOptions options{{0}, 100, 1, 1, 0, 1, {}};
-  options.save = corpus.path();
+  options.save = corpus.path;
   std::ostringstream out;
   const auto e = thrown<ConformError>([&] { conform(engine_candidate, options, out); });
   ASSERT_TRUE(e);
-  EXPECT_TRUE(std::string(e->what()).starts_with("--save: " + (corpus.path() / "bad.json").string() + ": malformed JSON"))
+  EXPECT_TRUE(std::string(e->what()).starts_with("--save: " + (corpus.path / "bad.json").string() + ": malformed JSON"))
       << e->what();
 }
 
 TEST(conform, refuses_a_save_directory_or_picture_it_cannot_write_before_any_case) {
-  const TemporaryDirectory dir;
-  std::filesystem::create_directories(dir.path());
-  std::ofstream(dir.path() / "file") << "x";
+  const TempDir dir;
+  dir.write("file", "x");
   std::uint64_t asked = 0;
   FunctionCandidate counting([&](const Circles& w) {
     ++asked;
@@ -491,17 +477,17 @@ TEST(conform, refuses_a_save_directory_or_picture_it_cannot_write_before_any_cas
   });
   std::ostringstream out;
   ConformOptions options{{0}, 100, 1, 1, 0, 1, {}};
-  options.save = dir.path() / "file";
+  options.save = dir.path / "file";
   auto e = thrown<ConformError>([&] { conform(counting, options, out); });
   ASSERT_TRUE(e);
-  EXPECT_EQ(std::string(e->what()), "--save: cannot use the directory " + (dir.path() / "file").string() + ": " +
+  EXPECT_EQ(std::string(e->what()), "--save: cannot use the directory " + (dir.path / "file").string() + ": " +
                                         std::make_error_code(std::errc::not_a_directory).message());
   options.save.clear();
-  options.svg = dir.path() / "no" / "such" / "picture.svg";
+  options.svg = dir.path / "no" / "such" / "picture.svg";
   e = thrown<ConformError>([&] { conform(counting, options, out); });
   ASSERT_TRUE(e);
   EXPECT_EQ(std::string(e->what()), "--svg: cannot write " + options.svg.string() + ": the directory " +
-                                        (dir.path() / "no" / "such").string() + " does not exist");
+                                        (dir.path / "no" / "such").string() + " does not exist");
   EXPECT_EQ(asked, 0u);
 }
 

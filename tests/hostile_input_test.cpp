@@ -4,6 +4,7 @@
 // check are not repeated here; fuzz/ throws random bytes at the same readers (docs/hardening.md).
 #include "cli/protocol.hpp"
 #include "cli/scene.hpp"
+#include "tests/temp_dir.hpp"
 #include "tests/thrown.hpp"
 
 #include <gtest/gtest.h>
@@ -36,25 +37,13 @@ std::string line_error(std::string_view text) {
 // A file in a fresh directory of the test's own, removed with it.
 class scene_file : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = std::filesystem::path(::testing::TempDir()) /
-           ("hostile_input_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    std::filesystem::remove_all(dir_);
-    std::filesystem::create_directories(dir_);
-  }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
-
-  std::string write(const std::string& name, std::string_view bytes) const {
-    const std::string path = (dir_ / name).string();
-    std::ofstream(path, std::ios::binary) << bytes;
-    return path;
-  }
+  std::string write(const std::string& name, std::string_view bytes) const { return dir_.write(name, std::string(bytes)); }
   std::string load_error(const std::string& path) const {
     const auto e = thrown<SceneError>([&] { load_scene(path); });
     return e ? e->what() : "";
   }
 
-  std::filesystem::path dir_;
+  circles::testing::TempDir dir_;
 };
 
 TEST_F(scene_file, an_empty_file_is_refused_as_empty) {
@@ -73,7 +62,7 @@ TEST_F(scene_file, a_truncated_file_is_refused_at_its_end) {
 }
 
 TEST_F(scene_file, a_directory_is_refused_as_not_a_file) {
-  const std::string path = (dir_ / "scenes").string();
+  const std::string path = (dir_.path / "scenes").string();
   std::filesystem::create_directory(path);
   EXPECT_EQ(load_error(path), path + ": cannot read the file: it is a directory");
 }

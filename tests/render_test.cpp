@@ -5,6 +5,7 @@
 #include "cli/video.hpp"
 
 #include "impl/predicate.hpp"
+#include "tests/temp_dir.hpp"
 #include "tests/thrown.hpp"
 
 #include <gtest/gtest.h>
@@ -34,24 +35,7 @@ namespace {
 
 using circles::testing::thrown;
 
-// A fresh directory for one test's files, removed at the end.
-struct TempDir {
-  std::filesystem::path path;
-  TempDir() {
-    std::string name = (std::filesystem::temp_directory_path() / "circles-render-test-XXXXXX").string();
-    path = mkdtemp(name.data()) ? name : throw std::runtime_error("mkdtemp failed");
-  }
-  ~TempDir() {
-    std::filesystem::permissions(path, std::filesystem::perms::owner_all, std::filesystem::perm_options::add);
-    std::filesystem::remove_all(path);
-  }
-  std::vector<std::string> files(const std::filesystem::path& sub = "") const {
-    std::vector<std::string> names;
-    for (const auto& e : std::filesystem::directory_iterator(path / sub)) names.push_back(e.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
-  }
-};
+using circles::testing::TempDir;
 
 // PATH set to `value` for one test, then restored.
 struct PathSetTo {

@@ -10,6 +10,7 @@
 #include "cli/vectors.hpp"
 #include "impl/engine.hpp"
 #include "impl/predicate.hpp"
+#include "tests/temp_dir.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -33,20 +34,7 @@ using json = nlohmann::json;
 
 const fs::path root = CIRCLES_SOURCE_DIR;
 
-// A fresh directory for one test's files, removed at the end.
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    std::string name = (fs::temp_directory_path() / "circles-vectors-test-XXXXXX").string();
-    path = mkdtemp(name.data()) ? name : throw std::runtime_error("mkdtemp failed");
-  }
-  ~TempDir() { fs::remove_all(path); }
-  std::vector<std::string> files() const {
-    std::vector<std::string> names;
-    for (const auto& e : fs::directory_iterator(path)) names.push_back(e.path().filename().string());
-    return names;
-  }
-};
+using circles::testing::TempDir;
 
 std::string bytes_of(const fs::path& file) {
   std::ifstream in(file, std::ios::binary);
