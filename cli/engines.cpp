@@ -35,6 +35,10 @@ class ImplStepper final : public Stepper {
     if constexpr (requires { engine_.exact(); }) return engine_.exact();
     return std::nullopt;
   }
+  std::optional<impl::EngineStats> work() const override {
+    if constexpr (requires { engine_.stats(); }) return engine_.stats();
+    return std::nullopt;
+  }
 
  private:
   std::optional<Overflow> advance() override {

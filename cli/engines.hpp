@@ -8,6 +8,7 @@
 #pragma once
 
 #include "cli/protocol.hpp"
+#include "impl/pair_list.hpp"  // impl::EngineStats
 #include "spec/oracle.hpp"  // spec::Sequence
 #include "spec/outside_c.hpp"
 
@@ -48,6 +49,9 @@ class Stepper {
   // w_steps() itself, as rationals, from an engine that keeps the exact sequence (EngineEntry::exact); nullopt
   // from one that keeps only doubles.
   virtual std::optional<spec::Sequence> exact() const { return std::nullopt; }
+  // What the steps so far did and skipped (impl::EngineStats), from an engine of impl/; nullopt from the
+  // oracle, which does everything every step.
+  virtual std::optional<impl::EngineStats> work() const { return std::nullopt; }
 
  protected:
   struct Overflow {

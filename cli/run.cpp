@@ -8,7 +8,9 @@
 #include "cli/video.hpp"
 
 #include <algorithm>
+#include <iomanip>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <thread>
 #include <utility>
@@ -133,6 +135,7 @@ RunResult run(const Circles& world, const RunOptions& options) {
       progress.update(pass, result.steps, stepped);
     }
   }
+  result.work = stepper->work();
   if (trace || exact_trace) {
     const auto begin = Clock::now();
     if (trace) trace->commit();
@@ -185,6 +188,25 @@ void print_summary(const RunResult& result, std::size_t circles, const RunOption
         << static_cast<double>(result.frames) / kVideoFrameRate << " s)\n";
 }
 
+void print_work(const impl::EngineStats& work, std::size_t circles, std::ostream& out) {
+  // Each figure with its share, so what the engine skipped reads at a glance.
+  const auto share = [](std::uint64_t part, double whole) {
+    std::ostringstream o;
+    if (whole > 0) o << " (" << std::setprecision(3) << 100.0 * static_cast<double>(part) / whole << "%)";
+    return o.str();
+  };
+  const auto steps = static_cast<double>(work.steps);
+  const double circle_steps = steps * static_cast<double>(circles);
+  out << "pair lists built: " << work.rebuilds << " (keys, re-sort and broad phase; one per "
+      << (work.rebuilds > 0 ? steps / static_cast<double>(work.rebuilds) : 0.0) << " steps)\n";
+  out << "pairs tested: " << work.pairs_tested << " ("
+      << (circle_steps > 0 ? static_cast<double>(work.pairs_tested) / circle_steps : 0.0) << " per circle-step)\n";
+  out << "pairs in contact: " << work.contacts << share(work.contacts, static_cast<double>(work.pairs_tested)) << "\n";
+  out << "steps with no pair to test: " << work.quiet_steps << share(work.quiet_steps, steps) << "\n";
+  out << "circle-steps with no contact test: " << work.lonely_circle_steps
+      << share(work.lonely_circle_steps, circle_steps) << "\n";
+}
+
 void print_stats(const RunResult& result, std::size_t circles, const RunOptions& options, std::ostream& out) {
   out << "steps: " << result.steps << "\n";
   out << "circles: " << circles << "\n";
@@ -199,6 +221,7 @@ void print_stats(const RunResult& result, std::size_t circles, const RunOptions&
   out << "stepping: " << result.stepping.count() << " s\n";
   const double circle_steps = static_cast<double>(result.steps) * static_cast<double>(circles);
   if (circle_steps > 0) out << "ns per circle-step: " << result.stepping.count() * 1e9 / circle_steps << "\n";
+  if (result.work) print_work(*result.work, circles, out);
   const bool pictures = !options.render.empty() || !options.video.empty();
   if (pictures && options.fit) out << "fit pass: " << result.fitting.count() << " s\n";
   if (pictures) {

@@ -48,6 +48,7 @@ struct RunResult {
                                          // ffmpeg (and waiting for it at the end)
   Seconds tracing{};                     // formatting and writing the trace
   Seconds total{};                       // the whole of run(), from its first output file to its last
+  std::optional<impl::EngineStats> work;  // what the engine's steps did and skipped (engines of impl/ only)
 };
 
 // Steps w_0 = `world` with options.engine up to options.steps times, stopping at the first overflow.
@@ -76,13 +77,18 @@ void append_exact_line(std::string& out, std::uint64_t step, const spec::Sequenc
 // f/frame-000099.png (34, every 3 steps)", "video: v.mp4 (34 frames at 60 frames/s, 0.566667 s)".
 void print_summary(const RunResult& result, std::size_t circles, const RunOptions& options, std::ostream& out);
 
+// The lines of --stats about the engine's work: lists built, pairs tested, contacts, steps and circle-steps
+// with no test (docs/run.md).
+void print_work(const impl::EngineStats& work, std::size_t circles, std::ostream& out);
+
 // --stats: one "name: value" line for each figure of the run, those that do not apply left out:
 //   steps: 1000                    stepping: 0.00123 s            drawing: 1.2 s (3.6 ms per frame)
 //   circles: 10                    ns per circle-step: 123        png: 2.1 s (6.3 ms per frame)
 //   engine: double                 fit pass: 0.0011 s             video: 0.9 s (2.7 ms per frame)
 //   threads: 2 (all cores)         frames: 334                    trace: 0.01 s
 //                                                                 total: 4.3 s
-// in that order, one a line (down the first column, then the second, then the third).
+// in that order, one a line (down the first column, then the second, then the third); an engine of impl/
+// adds print_work's lines after "ns per circle-step".
 void print_stats(const RunResult& result, std::size_t circles, const RunOptions& options, std::ostream& out);
 
 // `engine` and the oracle stepped side by side from w_0 = `world` for `steps` steps, compared by value after

@@ -15,6 +15,7 @@
 // cells, and a farther pair is never put to the test, even where a rounding test would call it touching.
 #pragma once
 
+#include "impl/pair_list.hpp"
 #include "impl/predicate.hpp"
 #include "impl/rounding.hpp"
 
@@ -24,8 +25,19 @@
 
 namespace circles::impl {
 
+// Besides intersect and advance, each policy states two bounds for the pair list (impl/pair_list.hpp):
+//   drift  per step, |advance(p, v) − p| ≤ |v|·kSpeedBound + |p′|·drift + kDriftAbsolute per coordinate, with
+//          √2 folded in (the norm of the two coordinates' errors): √2·2^-53 rounded up for one double rounding
+//          of the result (advance_naive's inexact 1/60 is below 1/60, so kSpeedBound covers it), √2·2^-24 for
+//          a float rounding;
+//   slack  how far beyond the exact relation, relative to the largest |coordinate| and radius, intersect may
+//          call a pair touching: 0 for the exact test; for the naive tests a margin far above their few
+//          roundings (2^-48 for doubles, 2^-20 for floats), so the list offers them every pair they would
+//          test in a plain broad phase. Only the exact test is proven; the others are yardsticks.
 struct ExactArithmetic {
   static constexpr const char* name = "exact";
+  static constexpr double drift = kDriftBound;
+  static constexpr double slack = 0;
   static bool intersect(double ax, double ay, double ar, double bx, double by, double br) {
     return intersect_exact(ax, ay, ar, bx, by, br);
   }
@@ -34,6 +46,8 @@ struct ExactArithmetic {
 
 struct NaiveArithmetic {
   static constexpr const char* name = "naive";
+  static constexpr double drift = kDriftBound;
+  static constexpr double slack = 0x1p-48;
   static bool intersect(double ax, double ay, double ar, double bx, double by, double br) {
     return intersect_naive(ax, ay, ar, bx, by, br);
   }
@@ -42,6 +56,8 @@ struct NaiveArithmetic {
 
 struct NaiveSqrtArithmetic {
   static constexpr const char* name = "naive sqrt";
+  static constexpr double drift = kDriftBound;
+  static constexpr double slack = 0x1p-48;
   static bool intersect(double ax, double ay, double ar, double bx, double by, double br) {
     const double dx = bx - ax;
     const double dy = by - ay;
@@ -52,6 +68,8 @@ struct NaiveSqrtArithmetic {
 
 struct FloatNaiveArithmetic {
   static constexpr const char* name = "float naive";
+  static constexpr double drift = 0x1.6a1p-24;
+  static constexpr double slack = 0x1p-20;
   static bool intersect(double ax, double ay, double ar, double bx, double by, double br) {
     const float dx = static_cast<float>(bx) - static_cast<float>(ax);
     const float dy = static_cast<float>(by) - static_cast<float>(ay);
@@ -67,6 +85,8 @@ struct FloatNaiveArithmetic {
 
 struct ExactDecisionArithmetic {
   static constexpr const char* name = "exact decisions";
+  static constexpr double drift = kDriftBound;
+  static constexpr double slack = 0;
   static bool intersect(double ax, double ay, double ar, double bx, double by, double br) {
     return intersect_exact(ax, ay, ar, bx, by, br);
   }

@@ -33,6 +33,10 @@ void CellGrid::plan(std::span<const double> px, std::span<const double> py, std:
     const double limit = kWidthSpread * *middle;
     for (const double w : widths)
       if (w <= limit) base = std::max(base, w);
+    // A box's computed width depends on where the circle is (the roundings of x ± r): a circle that moves
+    // can come out an ulp wider than it was planned with, miss level 0, and make every circle search the
+    // level above. kBaseSlack keeps the widest planned box inside level 0 after such moves.
+    base *= kBaseSlack;
   }
   // At least the extent over kPlannedCells, so the scene fits in the grid; halves keep the extent finite.
   const double extent = std::max(xhi / 2 - xlo / 2, yhi / 2 - ylo / 2);

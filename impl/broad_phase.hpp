@@ -138,6 +138,7 @@ class CellGrid {
  private:
   static constexpr double kLastCell = static_cast<double>(kCells - 1);
   static constexpr double kWidthSpread = 4.0;
+  static constexpr double kBaseSlack = 1 + 0x1p-10;  // plan(): the base cell a little wider than the widest box
   double origin_x_ = 0, origin_y_ = 0, base_cell_ = 1;
   std::array<double, kLevels> inverse_{};  // inv_L = 4^-L / base cell
 };

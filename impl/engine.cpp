@@ -1,14 +1,15 @@
 // The double engines' step; the invariant is stated in engine.hpp, the design in docs/engine.md.
 //
-// A step from world t (circles in cell order, keys sorted):
-//   find_contacts  each slot's least contact, by the grid's neighbourhoods (parallel over chunks of slots);
-//   advance        v ← v[least], p ← update(p, v), keys of the new positions (parallel); throws on overflow
-//                  before anything of world t changed;
-//   commit         the new world in cell order: CellOrder's permutation, then one gather (parallel).
-// A step proven quiet (quiet_for) is advance alone, with every circle its own contact and no keys.
+// A step from world t (circles in cell order, a list of the pairs that can meet, impl/pair_list.hpp):
+//   rebuild   when the list's horizon has ended: the skin for the next horizon, keys of the inflated circles,
+//             CellOrder's permutation and one gather, then the broad phase fills the list (parallel);
+//   contacts  each listed pair tested with the arithmetic's intersect; each slot's least contact (parallel);
+//   advance   v ← v[least] for the slots that have a contact, then p ← update(p, v) in place (parallel);
+//             where the rebuild could not prove that no position overflows, it checks and restores world t.
+// The slots keep their order between rebuilds: a step moves no circle in memory.
 #include "impl/engine.hpp"
 
-#include "impl/contacts.hpp"
+#include "impl/pair_list_impl.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -16,28 +17,13 @@
 #include <numeric>
 #include <string>
 #include <thread>
-#include <type_traits>
 
 namespace circles::impl {
 namespace {
 
-// advance works in blocks that stay in L1 (5 arrays of 256 doubles = 10 KiB).
-constexpr std::size_t kBlock = 256;
-
-// The quiet-step proof (docs/engine.md, "Quiet steps"). Horizons start at kFirstHorizon steps and double
-// after each success up to kMaxHorizon; after a failure the next attempt waits a gap that doubles up to
-// kMaxRetryGap, so a busy world pays for an attempt rarely.
-constexpr std::uint64_t kFirstHorizon = 16;
-constexpr std::uint64_t kMaxHorizon = std::uint64_t{1} << 16;
-constexpr std::uint64_t kMaxRetryGap = 1024;
-// Bounds on one step's move per coordinate with a constant velocity v (docs/engine.md, "Quiet steps"):
-// |RN(p + v/60) − p| ≤ |v|/60 + ulp(p')/2 ≤ |v|·kSpeedBound + |p'|·kDriftBound + kDriftAbsolute, where
-// kSpeedBound = 0.017 > 1/60 = 0.01666… (a 2% margin covers every rounding of the bound's own arithmetic),
-// kDriftBound = 2^-50 > 2^-53 (half an ulp, relative) and kDriftAbsolute = 2^-1072 > 2^-1075 (half the
-// subnormal ulp).
-constexpr double kSpeedBound = 0.017;
-constexpr double kDriftBound = 0x1p-50;
-constexpr double kDriftAbsolute = 0x1p-1072;
+// reach + skin below this: positions stay finite through the horizon (a rounded |p| ≤ 2^1023·(1 + 2^-52) <
+// DBL_MAX), so steps update in place without checking for overflow.
+constexpr double kOverflowFreeReach = 0x1p1023;
 
 template <class T>
 void gather(std::vector<T>& to, const std::vector<T>& from, std::span<const std::uint32_t> permutation,
@@ -104,8 +90,7 @@ BasicEngine<A>::BasicEngine(World w, EngineOptions options)
   now_.r = std::move(w.r_);
   now_.id.resize(now_.px.size());
   std::iota(now_.id.begin(), now_.id.end(), std::uint32_t{0});
-  grid_.plan(now_.px, now_.py, now_.r);
-  relayout();
+  least_ = now_.id;  // every slot its own least contact until a step finds one
 }
 
 template <class A>
@@ -138,234 +123,202 @@ bool BasicEngine<A>::precedes(std::size_t a, std::size_t b) const noexcept {
 
 template <class A>
 void BasicEngine<A>::step() {
-  if (quiet_left_ > 0) {
-    // A proven quiet step: no circle touches another, so every circle keeps its velocity (h gives v).
-    advance(false);
-    commit();
-    --quiet_left_;
-    ++quiet_steps_;
-    ++steps_;
-    return;
+  if (stats_.steps == rebuild_at_) rebuild();
+  std::size_t contacts = 0, tested = 0;
+  const std::uint64_t j = stats_.steps - built_at_;  // this step's place in the list's horizon
+  if (!pairs_.quiet(j)) {
+    // The arrays' addresses as locals: the loop's stores (least, touched) then cannot make the compiler
+    // reload them for every pair.
+    const double *px = now_.px.data(), *py = now_.py.data(), *r = now_.r.data();
+    contacts = pairs_.least_contacts(
+        j, threads_, least_, touched_, tested,
+        [px, py, r](std::size_t a, std::size_t b) { return A::intersect(px[a], py[a], r[a], px[b], py[b], r[b]); },
+        [this](std::size_t a, std::size_t b) { return precedes(a, b); });
+  } else {
+    ++stats_.quiet_steps;
+    for (std::vector<std::uint32_t>& list : touched_) list.clear();
   }
-  if (keys_stale_) relayout();
-  find_contacts();
-  advance(true);
-  commit();
-  ++steps_;
-  // The quiet-step proof is exact, so only the exact arithmetic may skip steps: the naive test can see a
-  // contact the exact one rules out, and the naive engine must not depend on its options either.
-  if constexpr (std::is_same_v<A, ExactArithmetic>) {
-    if (options_.skip_quiet_steps && contacts_ == 0 && steps_ >= retry_at_) {
-      if (horizon_ == 0) horizon_ = kFirstHorizon;
-      if (quiet_for(horizon_)) {
-        quiet_left_ = horizon_ + 1;
-        horizon_ = std::min(2 * horizon_, kMaxHorizon);
-      } else {
-        const std::uint64_t gap = std::min(kMaxRetryGap, std::max<std::uint64_t>(1, horizon_ / kFirstHorizon));
-        retry_at_ = steps_ + gap;
-        horizon_ = std::max(kFirstHorizon, horizon_ / 4);
-      }
-    }
-  }
+  advance();
+  ++stats_.steps;
+  stats_.pairs_tested += tested;
+  stats_.contacts += contacts;
+  stats_.lonely_circle_steps += pairs_.lonely();
 }
 
 template <class A>
-void BasicEngine<A>::find_contacts() {
-  const CellView view{now_.key, now_.px, now_.py, now_.r, now_.levels, now_.level_begin};
-  contacts_ = find_least_contacts(
-      grid_, view, threads_, least_, offers_,
-      [this](std::size_t a, std::size_t b) {
-        return A::intersect(now_.px[a], now_.py[a], now_.r[a], now_.px[b], now_.py[b], now_.r[b]);
-      },
-      [this](std::size_t a, std::size_t b) { return precedes(a, b); });
-}
-
-template <class A>
-void BasicEngine<A>::advance(bool with_contacts) {
+void BasicEngine<A>::advance() {
   const std::size_t n = now_.px.size();
-  for (std::vector<double>* v : {&next_px_, &next_py_, &next_vx_, &next_vy_}) v->resize(n);
-  next_key_.resize(n);
   const std::size_t chunks = chunk_count(n, threads_);
-  // Per chunk: the first fault as 2·index + (0 for px, 1 for py), and the new positions' extent.
-  constexpr std::uint64_t kNoFault = std::numeric_limits<std::uint64_t>::max();
-  std::vector<std::uint64_t> fault(chunks, kNoFault);
-  std::vector<std::array<double, 4>> extent(chunks);
+  touched_.resize(chunks);
+  moves_.resize(chunks);
+  // Every new velocity first, read from world t (a slot's least contact may be another chunk's slot).
   for_each_chunk(chunks, threads_, [&](std::size_t c) {
-    constexpr double inf = std::numeric_limits<double>::infinity();
-    double xlo = inf, xhi = -inf, ylo = inf, yhi = -inf;
-    for (std::size_t b = chunk_begin(n, chunks, c), end = chunk_begin(n, chunks, c + 1); b < end; b += kBlock) {
-      const std::size_t e = std::min(end, b + kBlock);
-      for (std::size_t t = b; t < e; ++t) {
-        const std::size_t s = with_contacts ? least_[t] : t;
-        next_vx_[t] = now_.vx[s];
-        next_vy_[t] = now_.vy[s];
-        next_px_[t] = now_.px[t];
-        next_py_[t] = now_.py[t];
-      }
-      A::advance(std::span<double>(next_px_.data() + b, e - b), std::span<const double>(next_vx_.data() + b, e - b));
-      A::advance(std::span<double>(next_py_.data() + b, e - b), std::span<const double>(next_vy_.data() + b, e - b));
-      for (std::size_t t = b; t < e; ++t) {
-        const double x = next_px_[t], y = next_py_[t];
-        // Inputs are finite, so the update gives ±inf only on an overflow, never NaN.
-        if (!std::isfinite(x) || !std::isfinite(y)) [[unlikely]]
-          fault[c] = std::min(fault[c], 2 * std::uint64_t{now_.id[t]} + (std::isfinite(x) ? 1 : 0));
-        xlo = std::min(xlo, x);
-        xhi = std::max(xhi, x);
-        ylo = std::min(ylo, y);
-        yhi = std::max(yhi, y);
-      }
-      if (with_contacts)
-        grid_.keys(std::span<const double>(next_px_.data() + b, e - b), std::span<const double>(next_py_.data() + b, e - b),
-                   std::span<const double>(now_.r.data() + b, e - b), std::span<CellKey>(next_key_.data() + b, e - b));
+    moves_[c].clear();
+    for (const std::uint32_t t : touched_[c]) moves_[c].push_back({t, now_.vx[least_[t]], now_.vy[least_[t]]});
+  });
+  if (!overflow_free_) {
+    backup_px_ = now_.px;
+    backup_py_ = now_.py;
+  }
+  // Per chunk: its slots' new velocities (the moves keep the old ones, for an overflow), then p ← update(p, v)
+  // in place, which reads only the chunk's own slots.
+  constexpr std::uint64_t kNoFault = std::numeric_limits<std::uint64_t>::max();
+  std::vector<std::uint64_t> fault(chunks, kNoFault);  // 2·index + (0 for px, 1 for py)
+  for_each_chunk(chunks, threads_, [&](std::size_t c) {
+    for (Move& m : moves_[c]) {
+      std::swap(now_.vx[m.slot], m.vx);
+      std::swap(now_.vy[m.slot], m.vy);
+      least_[m.slot] = m.slot;
     }
-    extent[c] = {xlo, xhi, ylo, yhi};
+    const std::size_t b = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1);
+    A::advance(std::span<double>(now_.px).subspan(b, e - b), std::span<const double>(now_.vx).subspan(b, e - b));
+    A::advance(std::span<double>(now_.py).subspan(b, e - b), std::span<const double>(now_.vy).subspan(b, e - b));
+    if (overflow_free_) return;
+    // Inputs are finite, so the update gives ±inf only on an overflow, never NaN.
+    for (std::size_t t = b; t < e; ++t)
+      if (!std::isfinite(now_.px[t]) || !std::isfinite(now_.py[t])) [[unlikely]]
+        fault[c] = std::min(fault[c], 2 * std::uint64_t{now_.id[t]} + (std::isfinite(now_.px[t]) ? 1 : 0));
   });
   const std::uint64_t first = *std::min_element(fault.begin(), fault.end());
-  if (first != kNoFault) throw PositionOverflow(steps_ + 1, first / 2, first % 2 ? "py" : "px");
-  if (!with_contacts) {
-    keys_stale_ = true;
-    return;
-  }
-  // Circles drifted out of the planned grid (their cells clamp, which is correct but slow): plan again.
-  bool inside = true;
-  for (const auto& [xlo, xhi, ylo, yhi] : extent)
-    inside = inside && (xlo > xhi || grid_.covers(xlo, xhi, ylo, yhi));
-  if (!inside) {
-    grid_.plan(next_px_, next_py_, now_.r);
-    for_each_chunk(chunks, threads_, [&](std::size_t c) {
-      for (std::size_t t = chunk_begin(n, chunks, c), end = chunk_begin(n, chunks, c + 1); t < end; ++t)
-        next_key_[t] = grid_.key(next_px_[t], next_py_[t], now_.r[t]);
-    });
-  }
+  if (first == kNoFault) return;
+  // World t again: the positions from the backup, the velocities from the moves.
+  now_.px.swap(backup_px_);
+  now_.py.swap(backup_py_);
+  for (std::size_t c = 0; c < chunks; ++c)
+    for (const Move& m : moves_[c]) {
+      least_[m.slot] = static_cast<std::uint32_t>(m.slot);
+      now_.vx[m.slot] = m.vx;
+      now_.vy[m.slot] = m.vy;
+    }
+  throw PositionOverflow(stats_.steps + 1, first / 2, first % 2 ? "py" : "px");
 }
 
 template <class A>
-void BasicEngine<A>::commit() {
-  // Nothing of now_ changed before here, so a PositionOverflow from advance left it as it was.
-  std::swap(now_.px, next_px_);
-  std::swap(now_.py, next_py_);
-  std::swap(now_.vx, next_vx_);
-  std::swap(now_.vy, next_vy_);
-  if (keys_stale_) return;
+void BasicEngine<A>::rebuild() {
+  // A list for world t and the horizon H: the skin (impl/pair_list.hpp) from vmax and reach, keys of the
+  // inflated circles, the slots in their cell order, and the broad phase over the inflated radii, each pair
+  // it offers listed from its first step.
+  const std::size_t n = now_.px.size();
+  const std::size_t chunks = chunk_count(n, threads_);
+  std::vector<std::array<double, 2>> largest(chunks);  // per chunk: vmax, reach
+  for_each_chunk(chunks, threads_, [&](std::size_t c) {
+    double vmax = 0, reach = 0;
+    for (std::size_t t = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1); t < e; ++t) {
+      vmax = std::max(vmax, norm_upper(now_.vx[t], now_.vy[t]));
+      reach = std::max({reach, std::fabs(now_.px[t]), std::fabs(now_.py[t])});
+    }
+    largest[c] = {vmax, reach};
+  });
+  double vmax = 0, reach = 0, radius = 0;
+  for (const auto& [v, p] : largest) {
+    vmax = std::max(vmax, v);
+    reach = std::max(reach, p);
+  }
+  for (const double r : now_.r) radius = std::max(radius, r);
+  std::uint64_t horizon = !options_.keep_pairs ? 0 : options_.horizon > 0 ? options_.horizon : schedule_.horizon();
+  // A naive test may call a pair touching slightly beyond the exact relation: its slack (impl/arithmetic.hpp)
+  // widens every radius by `slack` for the list, on top of the skin.
+  const double slack = A::slack * reach + A::slack * radius;
+  double step = step_bound(horizon, vmax, reach, A::drift);
+  double pad = skin_for(horizon, vmax, reach, A::drift) + slack;
+  if (!(reach + pad < kOverflowFreeReach)) {
+    // Motion too fast or positions too near the double range to bound (or +∞): a list for this world alone.
+    horizon = 0;
+    step = 0;
+    pad = slack;
+    schedule_.collapse();
+  }
+  // Until the list's last step is taken, every circle moves at most skin_for(H + 1) from world t: below
+  // 2^1023 − reach, no position can overflow (a rounded |p| ≤ 2^1023·(1 + 2^-52) < DBL_MAX), and steps
+  // update in place.
+  overflow_free_ = reach + skin_for(horizon + 1, vmax, reach, A::drift) < kOverflowFreeReach;
+  inflated_.resize(n);
+  for (std::size_t t = 0; t < n; ++t) inflated_[t] = pad > 0 ? outward_upper(now_.r[t], pad) : now_.r[t];
+  if (horizon != planned_horizon_) {
+    grid_.plan(now_.px, now_.py, inflated_);
+    planned_horizon_ = horizon;
+  }
+  next_key_.resize(n);
+  std::vector<std::array<double, 4>> extent(chunks);
+  const auto keys = [&] {
+    for_each_chunk(chunks, threads_, [&](std::size_t c) {
+      const std::size_t b = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1);
+      grid_.keys(std::span<const double>(now_.px).subspan(b, e - b), std::span<const double>(now_.py).subspan(b, e - b),
+                 std::span<const double>(inflated_).subspan(b, e - b), std::span<CellKey>(next_key_).subspan(b, e - b));
+      constexpr double inf = std::numeric_limits<double>::infinity();
+      double xlo = inf, xhi = -inf, ylo = inf, yhi = -inf;
+      for (std::size_t t = b; t < e; ++t) {
+        xlo = std::min(xlo, now_.px[t]);
+        xhi = std::max(xhi, now_.px[t]);
+        ylo = std::min(ylo, now_.py[t]);
+        yhi = std::max(yhi, now_.py[t]);
+      }
+      extent[c] = {xlo, xhi, ylo, yhi};
+    });
+  };
+  keys();
+  // Circles drifted out of the planned grid (their cells clamp, which is correct but slow): plan again.
+  bool inside = true;
+  for (const auto& [xlo, xhi, ylo, yhi] : extent) inside = inside && (xlo > xhi || grid_.covers(xlo, xhi, ylo, yhi));
+  if (!inside) {
+    grid_.plan(now_.px, now_.py, inflated_);
+    keys();
+  }
+  if (now_.key.size() != n) now_.key.clear();  // the first layout: no previous order to guide the sort
   const bool sorted = order_.sort(next_key_, now_.key, permutation_);
   std::swap(now_.key, next_key_);
   if (!sorted) {
-    // One gather of every field into cell order, through the spare arrays.
-    const std::size_t n = now_.px.size();
-    scratch_r_.resize(n);
+    // One gather of every field into cell order. least_ is the identity between steps, so it stays.
+    scratch_.resize(n);
     scratch_id_.resize(n);
-    next_px_.resize(n);
-    next_py_.resize(n);
-    next_vx_.resize(n);
-    next_vy_.resize(n);
     next_key_.resize(n);
-    const std::size_t chunks = chunk_count(n, threads_);
+    for (std::vector<double>* field : {&now_.px, &now_.py, &now_.vx, &now_.vy, &now_.r, &inflated_}) {
+      for_each_chunk(chunks, threads_, [&](std::size_t c) {
+        gather(scratch_, *field, permutation_, chunk_begin(n, chunks, c), chunk_begin(n, chunks, c + 1));
+      });
+      field->swap(scratch_);
+    }
     for_each_chunk(chunks, threads_, [&](std::size_t c) {
       const std::size_t b = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1);
-      gather(next_px_, now_.px, permutation_, b, e);
-      gather(next_py_, now_.py, permutation_, b, e);
-      gather(next_vx_, now_.vx, permutation_, b, e);
-      gather(next_vy_, now_.vy, permutation_, b, e);
-      gather(scratch_r_, now_.r, permutation_, b, e);
       gather(scratch_id_, now_.id, permutation_, b, e);
       gather(next_key_, now_.key, permutation_, b, e);
     });
-    std::swap(now_.px, next_px_);
-    std::swap(now_.py, next_py_);
-    std::swap(now_.vx, next_vx_);
-    std::swap(now_.vy, next_vy_);
-    std::swap(now_.r, scratch_r_);
     std::swap(now_.id, scratch_id_);
     std::swap(now_.key, next_key_);
   }
   index_levels(now_.key, now_.level_begin, now_.levels);
-}
-
-template <class A>
-void BasicEngine<A>::relayout() {
-  // The keys of the current positions, then commit's sort and gather: positions stay, only the order moves.
-  const std::size_t n = now_.px.size();
-  next_key_.resize(n);
-  for (std::size_t t = 0; t < n; ++t) next_key_[t] = grid_.key(now_.px[t], now_.py[t], now_.r[t]);
-  next_px_ = now_.px;
-  next_py_ = now_.py;
-  next_vx_ = now_.vx;
-  next_vy_ = now_.vy;
-  keys_stale_ = false;
-  if (now_.key.size() != n) now_.key.clear();  // the first layout: no previous order to guide the sort
-  commit();
-}
-
-template <class A>
-bool BasicEngine<A>::quiet_for(std::uint64_t horizon) {
-  // Proves that no pair intersects in this world or in the next `horizon` worlds, given that velocities stay
-  // constant while nothing touches (docs/engine.md, "Quiet steps"): every circle moves at most δ in each of x
-  // and y over those steps, so a pair that meets by then is within r_a + r_b + 2δ·√2 ≤ r'_a + r'_b now, with
-  // r' ≥ r + 2δ (√2 < 2). No pair intersects exactly at the radii r' ⇒ quiet.
-  const std::size_t n = now_.px.size();
-  double speed = 0, reach = 0;
-  for (std::size_t t = 0; t < n; ++t) {
-    speed = std::max({speed, std::fabs(now_.vx[t]), std::fabs(now_.vy[t])});
-    reach = std::max({reach, std::fabs(now_.px[t]), std::fabs(now_.py[t])});
-  }
-  const auto steps = static_cast<double>(horizon);
-  // |p| over the horizon is at most reach + steps·speed·kSpeedBound, up to the drift, which is a 2^-50
-  // fraction per step: kDriftBound's eightfold margin over half an ulp covers it for horizons below 2^40.
-  const double far = reach + steps * speed * kSpeedBound;
-  const double delta = steps * (speed * kSpeedBound + far * kDriftBound + kDriftAbsolute);
-  if (!std::isfinite(delta)) return false;
-  std::vector<double> inflated(n);
-  for (std::size_t t = 0; t < n; ++t) inflated[t] = outward_upper(now_.r[t], 2 * delta);
-  // The same broad phase over the inflated radii, in a layout of its own.
-  CellGrid grid;
-  grid.plan(now_.px, now_.py, inflated);
-  std::vector<CellKey> key(n);
-  for (std::size_t t = 0; t < n; ++t) key[t] = grid.key(now_.px[t], now_.py[t], inflated[t]);
-  std::vector<std::uint32_t> order;
-  CellOrder{}.sort(key, {}, order);
-  std::vector<CellKey> sorted_key(n);
-  std::vector<double> px(n), py(n), r(n);
-  for (std::size_t t = 0; t < n; ++t) {
-    sorted_key[t] = key[order[t]];
-    px[t] = now_.px[order[t]];
-    py[t] = now_.py[order[t]];
-    r[t] = inflated[order[t]];
-  }
-  std::array<std::size_t, CellGrid::kLevels + 1> level_begin{};
-  std::vector<unsigned> levels;
-  index_levels(sorted_key, level_begin, levels);
-  const CellView view{sorted_key, px, py, r, levels, level_begin};
-  NeighbourCursor cursor;
-  bool meets = false;
-  for (std::size_t a = 0; a < n && !meets; ++a)
-    visit_neighbourhood(grid, view, a, cursor, [&](std::size_t b) {
-      meets = meets || intersect_exact(px[a], py[a], r[a], px[b], py[b], r[b]);
-    });
-  for (std::size_t g = level_begin[CellGrid::kGlobalLevel]; g < n && !meets; ++g)
-    for (std::size_t b = 0; b < n && !meets; ++b)
-      meets = b != g && intersect_exact(px[g], py[g], r[g], px[b], py[b], r[b]);
-  return !meets;
+  const CellView view{now_.key, now_.px, now_.py, inflated_, now_.levels, now_.level_begin};
+  // Each pair's first step from its gap (impl/pair_list.hpp), on the radii widened by the slack alone.
+  padded_.resize(n);
+  for (std::size_t t = 0; t < n; ++t) padded_[t] = slack > 0 ? outward_upper(now_.r[t], slack) : now_.r[t];
+  // Most pairs the broad phase offers are decided by the filter of the exact test alone (no square root):
+  // disjoint at the inflated radii means never within the horizon, and intersecting at the padded ones means
+  // from step 0.
+  const double *px = now_.px.data(), *py = now_.py.data(), *r = padded_.data(), *ri = inflated_.data();
+  pairs_.build(grid_, view, threads_, horizon, [px, py, r, ri, step, horizon](std::size_t a, std::size_t b) {
+    if (intersect_filter(px[a], py[a], ri[a], px[b], py[b], ri[b]) == Decision::disjoint) return kNever;
+    if (intersect_filter(px[a], py[a], r[a], px[b], py[b], r[b]) == Decision::intersect) return std::uint32_t{0};
+    return first_step(px[a], py[a], r[a], px[b], py[b], r[b], step, horizon);
+  });
+  built_at_ = stats_.steps;
+  stats_.pairs_listed += pairs_.size();
+  ++stats_.rebuilds;
+  if (options_.keep_pairs && options_.horizon == 0) schedule_.update(pairs_.tests(), n);
+  rebuild_at_ = stats_.steps + horizon + 1;
 }
 
 template <class A>
 std::vector<CandidatePair> BasicEngine<A>::candidates() const {
-  if (keys_stale_) {
+  if (stats_.steps == rebuild_at_) {
     BasicEngine copy = *this;
-    copy.relayout();
+    copy.rebuild();
     return copy.candidates();
   }
-  const std::size_t n = now_.px.size();
   std::vector<CandidatePair> out;
-  const auto add = [&](std::size_t a, std::size_t b) {
+  pairs_.for_each([&](std::size_t a, std::size_t b) {
     const std::uint32_t i = now_.id[a], j = now_.id[b];
     out.push_back(i < j ? CandidatePair{i, j} : CandidatePair{j, i});
-  };
-  const CellView view{now_.key, now_.px, now_.py, now_.r, now_.levels, now_.level_begin};
-  NeighbourCursor cursor;
-  for (std::size_t a = 0; a < n; ++a) visit_neighbourhood(grid_, view, a, cursor, [&](std::size_t b) { add(a, b); });
-  for (std::size_t g = now_.level_begin[CellGrid::kGlobalLevel]; g < n; ++g)
-    for (std::size_t b = 0; b < n; ++b)
-      if (b != g) add(g, b);
+  });
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;

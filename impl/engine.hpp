@@ -5,17 +5,20 @@
 //              circle k takes the velocity of the least circle it intersects exactly (least in lexicographic
 //              order on (px, py, vx, vy, r), then by index), or keeps its own, and then
 //              p ← RN(p + v_new/60) per coordinate. Every circle reads the old world. The result does not depend
-//              on EngineOptions: every thread count and every skipped step give the same bits.
+//              on EngineOptions: every thread count and every horizon of the pair lists give the same bits.
 //
-// Pieces: the cell grid (impl/broad_phase.hpp, conservative) → the arithmetic's intersect test → the
+// Pieces: the cell grid (impl/broad_phase.hpp, conservative) on radii inflated by a proven skin → a list of the
+// pairs that can meet within the horizon, each from its first step (impl/pair_list.hpp) → the arithmetic's
+// intersect test → the
 // lexicographic minimum (double < and == are exact; −0 == +0 as for the oracle's rationals) → the arithmetic's
 // update. ExactArithmetic (intersect_exact, advance_rounded) makes the invariant hold; NaiveArithmetic
 // (intersect_naive, advance_naive) is the same engine without exactness, to measure what exactness costs.
-// docs/engine.md describes the layout, the step and the quiet-step proof.
+// docs/engine.md describes the layout, the step and the proofs of the broad phase and the pair lists.
 #pragma once
 
 #include "impl/arithmetic.hpp"
 #include "impl/broad_phase.hpp"
+#include "impl/pair_list.hpp"
 #include "spec/outside_c.hpp"
 
 #include <array>
@@ -75,11 +78,16 @@ struct EngineOptions {
   // Worker threads; 0 means one per core (std::thread::hardware_concurrency()). Results are the same bits
   // for every value.
   unsigned threads = 0;
-  // Prove stretches of steps in which no pair can meet and run them without the broad or narrow phase.
-  bool skip_quiet_steps = true;
+  // Keep candidate pairs across steps (impl/pair_list.hpp: a list with a proven skin, rebuilt when its
+  // horizon ends); false builds a list for every step alone. Results are the same bits either way.
+  bool keep_pairs = true;
+  // The horizon of every list, in steps, instead of HorizonSchedule's choice (0 means that choice); for tests
+  // and benchmarks. With keep_pairs false it is ignored. Results are the same bits for every value.
+  std::uint64_t horizon = 0;
 };
 
-// The engine: circles kept in cell order (impl/broad_phase.hpp) across steps.
+// The engine: circles kept in cell order (impl/broad_phase.hpp), a list of the pairs that can meet before
+// the next rebuild (impl/pair_list.hpp), and the arithmetic's pair test and update.
 template <class Arithmetic>
 class BasicEngine {
  public:
@@ -90,9 +98,10 @@ class BasicEngine {
   // The current world, circle k at index k as given to the constructor.
   World world() const;
   // Steps taken since construction.
-  std::uint64_t steps() const noexcept { return steps_; }
-  // Steps taken without the broad and narrow phases, proven quiet.
-  std::uint64_t quiet_steps() const noexcept { return quiet_steps_; }
+  std::uint64_t steps() const noexcept { return stats_.steps; }
+  // Steps whose list was empty: no pair was tested, every circle only moved.
+  std::uint64_t quiet_steps() const noexcept { return stats_.quiet_steps; }
+  const EngineStats& stats() const noexcept { return stats_; }
   unsigned threads() const noexcept { return threads_; }
 
   // One resolved step. Throws PositionOverflow (world unchanged) when a position would become infinite.
@@ -108,33 +117,39 @@ class BasicEngine {
   struct Layout {  // circles in cell order; slot t holds circle id[t]
     std::vector<double> px, py, vx, vy, r;
     std::vector<std::uint32_t> id;
-    std::vector<CellKey> key;
+    std::vector<CellKey> key;      // by the inflated radii of the last rebuild
     std::vector<unsigned> levels;  // the levels that hold a circle, ascending, the global level excluded
     std::array<std::size_t, CellGrid::kLevels + 1> level_begin{};  // level L: [level_begin[L], level_begin[L + 1])
   };
+  // A new velocity for a slot, kept until every new velocity of the step is known (all read world t).
+  struct Move {
+    std::uint32_t slot;
+    double vx, vy;
+  };
 
   bool precedes(std::size_t a, std::size_t b) const noexcept;
-  void relayout();
-  void find_contacts();
-  void advance(bool with_contacts);
-  void commit();
-  bool quiet_for(std::uint64_t steps);
+  void rebuild();
+  void advance();
 
   EngineOptions options_;
   unsigned threads_ = 1;
-  std::uint64_t steps_ = 0, quiet_steps_ = 0;
-  std::uint64_t quiet_left_ = 0, horizon_ = 0, retry_at_ = 0;
-  bool keys_stale_ = false;
-  std::size_t contacts_ = 0;
+  EngineStats stats_;
+  std::uint64_t rebuild_at_ = 0;  // the step whose world gets the next list
+  std::uint64_t built_at_ = 0;    // the step whose world got the current one
+  bool overflow_free_ = false;    // proven at the rebuild: no position can overflow before rebuild_at_
+  HorizonSchedule schedule_;
+  std::uint64_t planned_horizon_ = ~std::uint64_t{0};  // the horizon the grid was planned for
   CellGrid grid_;
   CellOrder order_;
   Layout now_;
-  // Scratch of one step: each slot's least contact (itself if none), the next positions and velocities and
-  // keys by slot, the sorting permutation, offers found across levels (one list per chunk).
+  PairList pairs_;
+  // Scratch: each slot's least contact (itself if none), the slots touched per chunk and their moves, the
+  // sorting permutation, the gather's targets, the inflated radii.
   std::vector<std::uint32_t> least_, permutation_, scratch_id_;
-  std::vector<double> next_px_, next_py_, next_vx_, next_vy_, scratch_r_;
+  std::vector<std::vector<std::uint32_t>> touched_;
+  std::vector<std::vector<Move>> moves_;
+  std::vector<double> scratch_, inflated_, padded_, backup_px_, backup_py_;
   std::vector<CellKey> next_key_;
-  std::vector<std::vector<ContactOffer>> offers_;
 };
 
 using Engine = BasicEngine<ExactArithmetic>;

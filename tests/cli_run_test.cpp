@@ -373,6 +373,40 @@ TEST(run, prints_stats_one_figure_a_line_leaving_out_what_does_not_apply) {
             "steps: 0\ncircles: 5\nengine: exact\nthreads: 2\nstepping: 2e-06 s\ntotal: 2 s\n");
 }
 
+// 4 steps of 5 circles (20 circle-steps): 2 lists built, one per 2 steps; 30 pairs tested, 1.5 per
+// circle-step; 3 in contact, 10%; 1 quiet step, 25%; 5 circle-steps with no test, 25%.
+TEST(run, prints_what_the_engine_did_and_skipped_after_the_time_per_circle_step) {
+  RunResult result;
+  result.steps = 4;
+  result.stepping = std::chrono::duration<double>(2e-6);
+  result.total = std::chrono::duration<double>(2);
+  result.work = impl::EngineStats{.steps = 4, .rebuilds = 2, .pairs_listed = 12, .pairs_tested = 30,
+                                  .contacts = 3, .quiet_steps = 1, .lonely_circle_steps = 5};
+  std::ostringstream out;
+  print_stats(result, 5, RunOptions{4, &engine("double"), 1, ""}, out);
+  EXPECT_EQ(out.str(),
+            "steps: 4\ncircles: 5\nengine: double\nthreads: 1\nstepping: 2e-06 s\nns per circle-step: 100\n"
+            "pair lists built: 2 (keys, re-sort and broad phase; one per 2 steps)\n"
+            "pairs tested: 30 (1.5 per circle-step)\n"
+            "pairs in contact: 3 (10%)\n"
+            "steps with no pair to test: 1 (25%)\n"
+            "circle-steps with no contact test: 5 (25%)\n"
+            "total: 2 s\n");
+}
+
+TEST(run, gives_the_double_engines_work_and_none_for_the_oracle) {
+  // Two circles far apart for 50 steps: every step of the double engine is quiet and no circle is tested;
+  // the oracle reports no work of its own.
+  const Circles apart{{0, 0, 1, 0, 1}, {100, 0, -1, 0, 1}};
+  const RunResult double_run = run(apart, RunOptions{50, &engine("double"), 1, ""});
+  ASSERT_TRUE(double_run.work);
+  EXPECT_EQ(double_run.work->steps, 50u);
+  EXPECT_EQ(double_run.work->quiet_steps, 50u);
+  EXPECT_EQ(double_run.work->lonely_circle_steps, 100u);
+  EXPECT_LT(double_run.work->rebuilds, 5u);
+  EXPECT_FALSE(run(apart, RunOptions{3, &engine("oracle"), 1, ""}).work);
+}
+
 TEST(run, refuses_a_frame_every_0_steps) {
   RunOptions options{3, &engine("double"), 1, ""};
   options.every = 0;

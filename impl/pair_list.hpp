@@ -1,0 +1,233 @@
+// Candidate pairs kept across steps: a neighbour list with a proven skin (a Verlet list, as molecular-dynamics
+// codes keep them), shared by the double engines (impl/engine.cpp) and the exact engine (impl/exact_engine.cpp).
+//
+//   Invariant (conservative): a list built at world t for a horizon of H steps holds every pair {a, b} of slots
+//   that intersects exactly in any of the worlds t, t + 1, …, t + H. So the step from each of those worlds
+//   tests only the listed pairs and still finds every contact.
+//
+// Why (docs/engine.md, "Pairs kept across steps"): velocities are only ever copied (h of (9)), so no circle of
+// any later world moves faster than the fastest circle of world t, |v| ≤ vmax. Over H steps every circle
+// moves at most `skin` (a bound on H steps of motion, below) from where it is in world t. A pair that
+// intersects in world t + j, j ≤ H, is therefore within r_a + r_b + 2·skin in world t, by the triangle
+// inequality; the list holds every pair that intersects exactly with each radius inflated to r' ≥ r + skin.
+// The engine's broad phase (impl/broad_phase.hpp) is run on the inflated radii, so no such pair is missed.
+//
+// Which H to use is a question of speed only (HorizonSchedule): a long horizon rebuilds the list rarely but
+// lists more pairs, each tested every step. No horizon changes a bit of any world.
+#pragma once
+
+#include "impl/broad_phase.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace circles::impl {
+
+// ── The skin ──────────────────────────────────────────────────────────────────────────────────────────
+//
+// One step moves a circle by d = (RN(px + vx/60) − px, RN(py + vy/60) − py) in the double engines. Per
+// coordinate, |RN(p + v/60) − (p + v/60)| ≤ ulp(p′)/2 ≤ |p′|·2^-53 + 2^-1075 (2^-53 relative for a normal p′,
+// half the subnormal ulp otherwise), so the rounding error e of d has |e| ≤ √2·(|p′|·2^-53 + 2^-1075), and
+// |d| ≤ |v|/60 + |e|. Over H steps, with |v| ≤ vmax and every coordinate within `far` of the origin:
+//
+//   |p_{t+H} − p_t| ≤ H·(vmax/60 + √2·2^-53·far + √2·2^-1075).
+//
+// skin_for computes that bound in doubles with each constant rounded up by enough to cover the at most eight
+// roundings (relative 2^-53 each) of its own arithmetic and of vmax (norm_upper):
+//   kSpeedBound   = 0x1.11111111112p-6 ≥ (1/60)·(1 + 2^-45): 1/60 = 0x1.111…p-6, cut after 44 bits and rounded
+//                   up; 2^-45 > 2^-50 > eight roundings of 2^-53. Tight on purpose (below (1/60)(1 + 2^-44)):
+//                   lowering it under 1/60 lets a pair that meets at the horizon's end escape the list
+//                   (tests/pair_list_test.cpp builds such a pair and catches it).
+//   kDriftBound   = 0x1.6a1p-53 ≥ √2·2^-53·(1 + 2^-14): √2 = 0x1.6a09e6…, rounded up at 12 bits. Its margin
+//                   also covers `far` leaving out the drift itself (H·2^-52 relative, H ≤ kMaxHorizon).
+//   kDriftAbsolute = 0x1p-1073 ≥ 2·√2·2^-1075.
+//   far           = reach + H·vmax·kSpeedBound, reach = the largest |coordinate| of world t.
+// The exact engine's moves are exact (X ← X + V): its skin is the speed term alone, on its own vmax.
+inline constexpr double kSpeedBound = 0x1.11111111112p-6;
+inline constexpr double kDriftBound = 0x1.6a1p-53;
+inline constexpr double kDriftAbsolute = 0x1p-1073;
+
+// A double n with √(vx² + vy²) ≤ n·(1 + 2^-50) + 2^-1074: m·√(1 + q²) with m = max(|vx|, |vy|) and
+// q = min/max ≤ 1, so nothing underflows or overflows early; five roundings of relative 2^-53 each (kSpeedBound's
+// margin covers them), and an absolute 2^-1075 when n is subnormal (within kDriftAbsolute's margin over
+// 2√2·2^-1075, since 2^-1074/60 is less). +∞ when the norm is beyond the double range.
+inline double norm_upper(double vx, double vy) noexcept {
+  double a = std::fabs(vx), b = std::fabs(vy);
+  if (a < b) std::swap(a, b);
+  if (a == 0) return 0;
+  const double q = b / a;
+  return a * std::sqrt(1 + q * q);
+}
+
+// The bound above on one step of motion within a horizon of H steps, for the world's vmax and reach and an
+// update whose rounding moves a coordinate by at most |p′|·drift + kDriftAbsolute (drift = kDriftBound for one
+// double rounding; see impl/arithmetic.hpp); +∞ when it overflows, never NaN (the inputs are finite, ≥ 0).
+inline double step_bound(std::uint64_t horizon, double vmax, double reach, double drift = kDriftBound) noexcept {
+  const double far = reach + static_cast<double>(horizon) * vmax * kSpeedBound;
+  return vmax * kSpeedBound + far * drift + kDriftAbsolute;
+}
+
+// The skin: the bound on H steps of motion, H·step_bound.
+inline double skin_for(std::uint64_t horizon, double vmax, double reach, double drift = kDriftBound) noexcept {
+  return static_cast<double>(horizon) * step_bound(horizon, vmax, reach, drift);
+}
+
+// ── When a pair can first meet ────────────────────────────────────────────────────────────────────────
+//
+// A pair whose gap g = |p_b − p_a| − (r_a + r_b) is positive in world t cannot intersect in world t + j unless
+// its two circles closed the gap, each moving at most j·step (step = skin/H, the bound of one step), so
+// j ≥ g/(2·step): the pair needs no test before step ⌈g/(2·step)⌉ of the horizon. first_step computes that
+// step from below, so the pair is tested no later than it must be:
+//   dx = RN(bx − ax), dy likewise, d2 = RN(RN(dx²) + RN(dy²)): d2 ≤ D²(1 + u)^4 + 3η (u = 2^-53, η = 2^-1075
+//   for the squares' underflow), so D ≥ RN(√d2)·(1 + u)^-3 − √(3η); where d2 overflows, root = norm_upper(dx,
+//   dy) ≤ D·(1 + 2^-50) + 2^-1074 instead (tests/pair_list_test.cpp). And r_a + r_b ≤ RN(r_a + r_b)(1 + u).
+//   So g ≥ RN(root·(1 − kGapRelative)) − RN(RN(r_a + r_b)·(1 + kGapRelative)) − kGapAbsolute with
+//   kGapRelative = 2^-49 (> 2^-50 + u + 3u) and kGapAbsolute = 2^-500 > √(3η) ≈ 2^-536.7; the last
+//   subtraction and the quotient round by u each, which the quotient's factor (1 − 2^-48) absorbs;
+//   the step is ⌈RN(g/(2·step))·(1 − 2^-48)⌉, 0 for g ≤ 0, and kNever when it is past the horizon.
+// A non-finite gap (only within reach of the double range) gives 0: test from the first step.
+inline constexpr double kGapRelative = 0x1p-49;
+inline constexpr double kGapAbsolute = 0x1p-500;
+inline constexpr double kQuotientShrink = 1 - 0x1p-48;
+inline constexpr std::uint32_t kNever = ~std::uint32_t{0};
+inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// The first step of a horizon of `horizon` steps, each moving a circle at most `step`, at which the circles
+// (ax, ay, ar) and (bx, by, br) may intersect: 0 … horizon, or kNever.
+inline std::uint32_t first_step(double ax, double ay, double ar, double bx, double by, double br, double step,
+                                std::uint64_t horizon) noexcept {
+  const double dx = bx - ax, dy = by - ay;
+  const double d2 = dx * dx + dy * dy;
+  const double root = d2 < kInfinity ? std::sqrt(d2) : norm_upper(dx, dy);
+  const double gap = root * (1 - kGapRelative) - (ar + br) * (1 + kGapRelative) - kGapAbsolute;
+  if (!std::isfinite(gap)) return 0;
+  if (gap <= 0) return 0;
+  const double q = gap / (2 * step) * kQuotientShrink;
+  if (!(q <= static_cast<double>(horizon))) return kNever;  // also +∞ for step = 0
+  return static_cast<std::uint32_t>(std::ceil(q));
+}
+
+// ── The schedule ──────────────────────────────────────────────────────────────────────────────────────
+//
+// The next horizon from what the last list cost. A list serves H + 1 steps, testing at step j the pairs whose
+// first step is ≤ j; rebuilding costs about kRebuildCost pair tests per circle (a rebuild of n circles, keys,
+// sort, gather and query, takes about as long as that many pair tests per circle: measured with
+// `circles run --stats` on the random scenes of 0.1% and 10% coverage, where the best fixed horizons were
+// 16 and 4 to 8). The horizon grows (fourfold far from balance, else twofold) while the pair tests of a step
+// cost less than half the rebuild's share of it, n·kRebuildCost/(H + 1), and halves when they cost more than
+// twice it, which keeps the two near balance, where their sum is least to within a small factor. It starts
+// at kFirstHorizon. Only counts decide it, never time, so a run is the same on every machine.
+class HorizonSchedule {
+ public:
+  static constexpr std::uint64_t kMaxHorizon = std::uint64_t{1} << 16;
+  static constexpr std::uint64_t kFirstHorizon = 4;
+  static constexpr double kRebuildCost = 8;
+
+  std::uint64_t horizon() const noexcept { return horizon_; }
+  // After a list whose tests over its horizon() + 1 steps add up to `tests` was built for `circles` circles:
+  // sets the next horizon.
+  void update(std::size_t tests, std::size_t circles) noexcept {
+    const double steps = static_cast<double>(horizon_ + 1);
+    const double per_step = static_cast<double>(tests) / steps;
+    const double rebuild = kRebuildCost * static_cast<double>(circles) / steps;
+    if (per_step < rebuild / 8)
+      horizon_ = std::min(kMaxHorizon, horizon_ == 0 ? 1 : 4 * horizon_);
+    else if (per_step < rebuild / 2)
+      horizon_ = std::min(kMaxHorizon, horizon_ == 0 ? 1 : 2 * horizon_);
+    else if (per_step > 2 * rebuild)
+      horizon_ /= 2;
+  }
+  // A horizon whose skin was not finite: the next list covers its own world only.
+  void collapse() noexcept { horizon_ = 0; }
+
+ private:
+  std::uint64_t horizon_ = kFirstHorizon;
+};
+
+// What an engine's steps did, for `circles run --stats` and the benchmarks: the work it skipped is visible.
+struct EngineStats {
+  std::uint64_t steps = 0;                // steps taken
+  std::uint64_t rebuilds = 0;             // pair lists built: keys, re-sort and broad phase
+  std::uint64_t pairs_listed = 0;         // pairs in those lists
+  std::uint64_t pairs_tested = 0;         // exact pair tests in the steps (a listed pair from its first step)
+  std::uint64_t contacts = 0;             // of those, the pairs that intersect
+  std::uint64_t quiet_steps = 0;          // steps with no pair to test
+  std::uint64_t lonely_circle_steps = 0;  // circle-steps of circles in no listed pair: no contact test
+};
+
+// ── The list ──────────────────────────────────────────────────────────────────────────────────────────
+
+struct SlotPair {
+  std::uint32_t a, b;  // slots, a < b
+};
+
+// Pairs of slots grouped by the chunk (impl/contacts.hpp) of their first slot, so that each thread offers
+// contacts to its own slots; within a chunk by blocks of kBlockSlots slots (by first slot), so that a step
+// reads each block's circles while they are in cache; within a block by first step, so that a step reaches
+// its active pairs without looking at the others. The member templates are defined in
+// impl/pair_list_impl.hpp, which only the engines' .cpp files include (it needs the library's OpenMP flags).
+class PairList {
+ public:
+  static constexpr std::size_t kBlockSlots = 1024;
+  // First steps 0 … kBuckets − 2 have a bucket each; the last bucket holds every later one, checked per pair.
+  static constexpr std::uint32_t kBuckets = 16;
+
+  // Lists every pair {a, b} among those the broad phase offers over `view` (whose radii are the inflated
+  // ones), global slots against every slot, for which first(a, b) ≤ horizon, from that step on. first must
+  // be conservative: no later than the first step of the horizon at which the pair may intersect.
+  template <class First>
+  void build(const CellGrid& grid, const CellView& view, unsigned threads, std::uint64_t horizon, First&& first);
+
+  // At step j of the horizon (j = 0 in the world the list was built in): least[t] for every slot t that
+  // intersects some partner listed from step ≤ j, the least such partner under precedes (a strict total
+  // order), and `touched[c]` lists those slots of chunk c. On entry least[t] == t for every t (the caller
+  // restores that after using it). Returns the number of intersecting pairs; `tested` gets the pairs tested.
+  template <class Intersect, class Precedes>
+  std::size_t least_contacts(std::uint64_t j, unsigned threads, std::vector<std::uint32_t>& least,
+                             std::vector<std::vector<std::uint32_t>>& touched, std::size_t& tested,
+                             Intersect&& intersect, Precedes&& precedes);
+
+  std::size_t size() const noexcept { return size_; }
+  // The pairs tested over the whole horizon: Σ (H + 1 − first step).
+  std::size_t tests() const noexcept { return tests_; }
+  // True when step j of the horizon has no pair to test.
+  bool quiet(std::uint64_t j) const noexcept { return size_ == 0 || j < earliest_; }
+  std::size_t chunks() const noexcept { return chunks_.size(); }
+  std::size_t slots() const noexcept { return slots_; }
+  // Slots that are in no listed pair: they need no contact test until the next build.
+  std::size_t lonely() const noexcept { return lonely_; }
+  // Every listed pair, for the validator.
+  template <class F>
+  void for_each(F&& f) const {
+    for (const Chunk& chunk : chunks_)
+      for (const SlotPair& p : chunk.pairs) f(p.a, p.b);
+    for (const SlotPair& p : global_) f(p.a, p.b);
+  }
+
+ private:
+  struct Chunk {
+    std::vector<SlotPair> pairs;        // by block, then first step's bucket, then first slot
+    std::vector<std::uint32_t> first;   // each pair's first step
+    std::vector<std::uint32_t> starts;  // pairs of block k, bucket q: [starts[k·K + q], starts[k·K + q + 1])
+    std::vector<ContactOffer> offers;   // a step's contacts for slots of later chunks
+  };
+  // The chunk that holds `slot`.
+  std::size_t chunk_of(std::size_t slot) const noexcept;
+
+  std::vector<Chunk> chunks_;
+  std::vector<SlotPair> global_;  // pairs with a global slot, tested from their first step every step
+  std::vector<std::uint32_t> global_first_;
+  // build's scratch, kept so that a rebuild allocates nothing: per chunk the pairs found and their first
+  // steps in the order found, and which slots are in a pair.
+  std::vector<std::vector<SlotPair>> found_;
+  std::vector<std::vector<std::uint32_t>> found_first_;
+  std::vector<unsigned char> listed_;
+  std::uint64_t horizon_ = 0, earliest_ = 0;
+  std::size_t size_ = 0, tests_ = 0, slots_ = 0, lonely_ = 0;
+};
+
+}  // namespace circles::impl

@@ -1,0 +1,170 @@
+// The member templates of PairList (impl/pair_list.hpp). Include it from .cpp files of circles::impl only:
+// for_each_chunk's pragma needs the library's OpenMP flags.
+#pragma once
+
+#include "impl/contacts.hpp"
+#include "impl/pair_list.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace circles::impl {
+
+inline std::size_t PairList::chunk_of(std::size_t slot) const noexcept {
+  const std::size_t c = chunks_.size();
+  std::size_t guess = std::min(c - 1, slot * c / slots_);  // chunk_begin is n·c/C: the guess is off by ≤ 1
+  while (guess + 1 < c && chunk_begin(slots_, c, guess + 1) <= slot) ++guess;
+  while (guess > 0 && chunk_begin(slots_, c, guess) > slot) --guess;
+  return guess;
+}
+
+template <class First>
+void PairList::build(const CellGrid& grid, const CellView& view, unsigned threads, std::uint64_t horizon,
+                     First&& first) {
+  const std::size_t n = view.key.size();
+  slots_ = n;
+  horizon_ = horizon;
+  const std::size_t chunks = chunk_count(n, threads);
+  chunks_.resize(chunks);
+  found_.resize(chunks);
+  found_first_.resize(chunks);
+  // The pairs of each chunk in the order the broad phase offers them: by first slot.
+  for_each_chunk(chunks, threads, [&](std::size_t c) {
+    std::vector<SlotPair>& found = found_[c];
+    std::vector<std::uint32_t>& steps = found_first_[c];
+    found.clear();
+    steps.clear();
+    NeighbourCursor cursor;
+    for (std::size_t a = chunk_begin(n, chunks, c), end = chunk_begin(n, chunks, c + 1); a < end; ++a)
+      visit_neighbourhood(grid, view, a, cursor, [&](std::size_t b) {
+        const std::uint32_t step = first(a, b);
+        if (step > horizon) return;
+        found.push_back({static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b)});
+        steps.push_back(step);
+      });
+  });
+  // Global slots (a box too wide for every level) against every slot, each pair once.
+  global_.clear();
+  global_first_.clear();
+  const std::size_t global = view.level_begin[CellGrid::kGlobalLevel];
+  for (std::size_t g = global; g < n; ++g)
+    for (std::size_t b = 0; b < n; ++b) {
+      if (b == g || (b >= global && b < g)) continue;
+      const std::uint32_t step = first(g, b);
+      if (step > horizon) continue;
+      global_.push_back({static_cast<std::uint32_t>(std::min(g, b)), static_cast<std::uint32_t>(std::max(g, b))});
+      global_first_.push_back(step);
+    }
+  // Per chunk, a counting sort by (block, bucket), stable, so each bucket stays in slot order.
+  for_each_chunk(chunks, threads, [&](std::size_t c) {
+    Chunk& chunk = chunks_[c];
+    const std::size_t begin = chunk_begin(n, chunks, c), end = chunk_begin(n, chunks, c + 1);
+    const std::size_t blocks = (end - begin + kBlockSlots - 1) / kBlockSlots;
+    const std::vector<SlotPair>& found = found_[c];
+    const std::vector<std::uint32_t>& steps = found_first_[c];
+    const auto bin = [&](std::size_t i) {
+      return (found[i].a - begin) / kBlockSlots * kBuckets + std::min(steps[i], kBuckets - 1);
+    };
+    chunk.starts.assign(blocks * kBuckets + 1, 0);
+    for (std::size_t i = 0; i < found.size(); ++i) ++chunk.starts[bin(i) + 1];
+    for (std::size_t k = 1; k < chunk.starts.size(); ++k) chunk.starts[k] += chunk.starts[k - 1];
+    chunk.pairs.resize(found.size());
+    chunk.first.resize(found.size());
+    std::vector<std::uint32_t> at(chunk.starts.begin(), chunk.starts.end() - 1);
+    for (std::size_t i = 0; i < found.size(); ++i) {
+      const std::uint32_t to = at[bin(i)]++;
+      chunk.pairs[to] = found[i];
+      chunk.first[to] = steps[i];
+    }
+  });
+  size_ = global_.size();
+  tests_ = 0;
+  earliest_ = horizon + 1;
+  std::vector<unsigned char>& listed = listed_;
+  listed.assign(n, 0);
+  const auto count = [&](const std::vector<SlotPair>& pairs, const std::vector<std::uint32_t>& steps) {
+    for (const std::uint32_t step : steps) {
+      tests_ += horizon + 1 - step;
+      earliest_ = std::min<std::uint64_t>(earliest_, step);
+    }
+    for (const SlotPair& p : pairs) listed[p.a] = listed[p.b] = 1;
+  };
+  for (const Chunk& chunk : chunks_) {
+    size_ += chunk.pairs.size();
+    count(chunk.pairs, chunk.first);
+  }
+  count(global_, global_first_);
+  lonely_ = static_cast<std::size_t>(std::count(listed.begin(), listed.end(), 0));
+}
+
+template <class Intersect, class Precedes>
+std::size_t PairList::least_contacts(std::uint64_t j, unsigned threads, std::vector<std::uint32_t>& least,
+                                     std::vector<std::vector<std::uint32_t>>& touched, std::size_t& tested,
+                                     Intersect&& intersect, Precedes&& precedes) {
+  const std::size_t chunks = chunks_.size();
+  touched.resize(chunks);
+  std::vector<std::array<std::size_t, 2>> counts(chunks);  // per chunk: pairs tested, pairs intersecting
+  // A slot's first offer records it as touched; later ones keep the least (a strict total order, so the
+  // order of the offers cannot change the result).
+  const auto offer = [&](std::size_t to, std::size_t from, std::vector<std::uint32_t>& list) {
+    if (least[to] == to) {
+      list.push_back(static_cast<std::uint32_t>(to));
+      least[to] = static_cast<std::uint32_t>(from);
+    } else if (precedes(from, least[to])) {
+      least[to] = static_cast<std::uint32_t>(from);
+    }
+  };
+  // The buckets active at step j: 0 … j, the last one (first steps ≥ kBuckets − 1) pair by pair.
+  const std::size_t last = std::min<std::uint64_t>(j, kBuckets - 1);
+  for_each_chunk(chunks, threads, [&](std::size_t c) {
+    Chunk& chunk = chunks_[c];
+    touched[c].clear();
+    chunk.offers.clear();
+    const std::size_t end = chunk_begin(slots_, chunks, c + 1);
+    const std::size_t blocks = (chunk.starts.size() - 1) / kBuckets;
+    std::size_t seen = 0, hits = 0;
+    const auto test = [&](const SlotPair p) {
+      ++seen;
+      if (!intersect(p.a, p.b)) return;
+      ++hits;
+      // A chunk writes the least contact of its own slots only; the rest is offered after the parallel part.
+      offer(p.a, p.b, touched[c]);
+      if (p.b < end)
+        offer(p.b, p.a, touched[c]);
+      else
+        chunk.offers.push_back({p.b, p.a});
+    };
+    for (std::size_t k = 0; k < blocks; ++k) {
+      const std::uint32_t* starts = chunk.starts.data() + k * kBuckets;
+      const std::size_t whole = last == kBuckets - 1 ? starts[kBuckets - 1] : starts[last + 1];
+      for (std::size_t i = starts[0]; i < whole; ++i) test(chunk.pairs[i]);
+      if (last == kBuckets - 1)
+        for (std::size_t i = starts[kBuckets - 1]; i < starts[kBuckets]; ++i)
+          if (chunk.first[i] <= j) test(chunk.pairs[i]);
+    }
+    counts[c] = {seen, hits};
+  });
+  std::size_t contacts = 0;
+  tested = 0;
+  for (const auto& [seen, hits] : counts) {
+    tested += seen;
+    contacts += hits;
+  }
+  for (const Chunk& chunk : chunks_)
+    for (const ContactOffer& o : chunk.offers) offer(o.to, o.from, touched[chunk_of(o.to)]);
+  for (std::size_t i = 0; i < global_.size(); ++i) {
+    if (global_first_[i] > j) continue;
+    ++tested;
+    const SlotPair p = global_[i];
+    if (!intersect(p.a, p.b)) continue;
+    ++contacts;
+    offer(p.a, p.b, touched[chunk_of(p.a)]);
+    offer(p.b, p.a, touched[chunk_of(p.b)]);
+  }
+  return contacts;
+}
+
+}  // namespace circles::impl

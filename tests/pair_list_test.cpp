@@ -1,0 +1,214 @@
+// The pair list's bounds (impl/pair_list.hpp), each recomputed exactly and each put at its edge: a world in
+// which a pair meets exactly when the list's horizon ends, so that a bound any lower lets the pair escape
+// the list and the engine misses the contact that step_all_pairs finds.
+#include "impl/pair_list.hpp"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "impl/engine.hpp"
+#include "spec/rational.hpp"
+
+namespace circles::impl {
+namespace {
+
+using Circles = std::vector<std::array<double, 5>>;
+using spec::exact;
+using spec::Q;
+
+// Steps `w` with a fixed list horizon and with step_all_pairs side by side; returns the first step at which
+// they differ (0: none within `steps`).
+int first_divergence(const Circles& w, std::uint64_t horizon, int steps) {
+  Engine e{World{w}, {.threads = 1, .keep_pairs = true, .horizon = horizon}};
+  World reference{w};
+  for (int s = 1; s <= steps; ++s) {
+    e.step();
+    reference = step_all_pairs(reference);
+    const Circles got = e.world().circles(), want = reference.circles();
+    for (std::size_t k = 0; k < got.size(); ++k)
+      for (std::size_t f = 0; f < 5; ++f)
+        if (std::bit_cast<std::uint64_t>(got[k][f]) != std::bit_cast<std::uint64_t>(want[k][f])) return s;
+  }
+  return 0;
+}
+
+TEST(pair_list, the_speed_bound_is_at_least_one_sixtieth_with_the_margin_its_derivation_claims) {
+  // kSpeedBound ≥ (1/60)(1 + 2^-45), and only just: it is 1/60 rounded up at 44 bits, below (1/60)(1 + 2^-44).
+  const Q k = exact(kSpeedBound), sixtieth = Q(1) / 60;
+  EXPECT_GE(k, sixtieth * (1 + Q(1) / Q(std::exp2(45))));
+  EXPECT_LT(k, sixtieth * (1 + Q(1) / Q(std::exp2(44))));
+  // The drift bound covers √2·2^-53 with a margin of 2^-14: compare squares, which are rational.
+  const Q d = exact(kDriftBound) * Q(std::exp2(53));
+  const Q margin = 1 + Q(1) / Q(std::exp2(14));
+  EXPECT_GE(d * d, 2 * margin * margin);
+  EXPECT_LT(d * d, 2 * (1 + Q(1) / Q(std::exp2(12))));
+  // The absolute term covers 2·√2 times half the least subnormal, (2^-1073)² ≥ 8·(2^-1075)², and what is left
+  // covers norm_upper's absolute 2^-1074 at the speed 1/60: 2^-1073 − 2√2·2^-1075 ≥ 2^-1074/60.
+  const Q half_least = exact(0x1p-1074) / 2;
+  EXPECT_GE(exact(kDriftAbsolute) * exact(kDriftAbsolute), 8 * half_least * half_least);
+  const Q left = exact(kDriftAbsolute) - exact(0x1p-1074) / 60;
+  EXPECT_GE(left * left, 8 * half_least * half_least);
+}
+
+TEST(pair_list, norm_upper_is_within_its_stated_rounding_of_the_exact_norm_either_way) {
+  // |v| ≤ n·(1 + 2^-50) + 2^-1074, the bound the skin relies on, and n ≤ |v|·(1 + 2^-50) + 2^-1074 (tight, so
+  // the skin is): both by squares, exactly, on random velocities over every binade and on extreme ones.
+  std::mt19937_64 g(60);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  std::uniform_int_distribution<int> binade(-1070, 1000);
+  const Q up = 1 + Q(1) / Q(std::exp2(50));
+  for (int i = 0; i < 20000; ++i) {
+    const double vx = std::ldexp(unit(g), binade(g)), vy = i % 3 ? std::ldexp(unit(g), binade(g)) : 0.0;
+    const double n = norm_upper(vx, vy);
+    const Q square = exact(vx) * exact(vx) + exact(vy) * exact(vy);
+    const Q above = exact(n) * up + exact(0x1p-1074);
+    ASSERT_LE(square, above * above) << vx << ", " << vy;
+    if (n > 0x1p-1074) {
+      const Q below = (exact(n) - exact(0x1p-1074)) / up;
+      ASSERT_LE(below * below, square) << vx << ", " << vy;
+    }
+  }
+  EXPECT_EQ(norm_upper(60, 0), 60);
+  EXPECT_EQ(norm_upper(0, -3), 3);
+  EXPECT_EQ(norm_upper(0, 0), 0);
+  EXPECT_EQ(norm_upper(0x1p-1074, 0x1p-1074), 0x1p-1074 * std::sqrt(2.0));
+}
+
+TEST(pair_list, first_step_is_never_later_than_the_first_step_a_pair_can_meet_and_at_most_one_earlier) {
+  // first_step(…) = e claims: the pair cannot intersect at step e − 1, i.e. D > S + 2(e − 1)·step, with D the
+  // exact distance and S the exact sum of the radii (kNever: D > S + 2H·step); and it is tight: the pair
+  // could meet at step e + 1 or earlier, D ≤ S + 2(e + 1)·step (up to a relative 2^-40). Both checked in
+  // rationals by squares, on pairs whose distance lands within 2^-50 of a whole number of steps, where a
+  // rounding taken the wrong way would show.
+  std::mt19937_64 g(2026);
+  std::uniform_real_distribution<double> unit(0, 1);
+  const auto q = [](double x) { return exact(x); };
+  int near_integer = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const double step = std::ldexp(0.5 + unit(g), static_cast<int>(unit(g) * 40) - 20);
+    const double ar = std::ldexp(unit(g), static_cast<int>(unit(g) * 20) - 10) * step * 8;
+    const double br = i % 5 == 0 ? 0.0 : ar * unit(g);
+    const std::uint64_t horizon = 1 + static_cast<std::uint64_t>(unit(g) * 100);
+    const double k = std::floor(unit(g) * static_cast<double>(horizon + 2));
+    const double jitter = (unit(g) - 0.5) * 0x1p-49;
+    const double target = (ar + br + 2 * k * step) * (1 + jitter);
+    const double angle = unit(g) * 6.283185307179586;
+    const double ax = std::ldexp(unit(g) - 0.5, static_cast<int>(unit(g) * 30)), ay = ax * unit(g);
+    const double bx = ax + target * std::cos(angle), by = ay + target * std::sin(angle);
+    const std::uint32_t e = first_step(ax, ay, ar, bx, by, br, step, horizon);
+    const Q d2 = (q(bx) - q(ax)) * (q(bx) - q(ax)) + (q(by) - q(ay)) * (q(by) - q(ay));
+    const Q sum = q(ar) + q(br);
+    const auto reach = [&](std::uint64_t j) {  // (S + 2j·step)²
+      const Q r = sum + 2 * Q(static_cast<long>(j)) * q(step);
+      return r * r;
+    };
+    if (e == kNever) {
+      ASSERT_GT(d2, reach(horizon)) << i;
+      continue;
+    }
+    ASSERT_LE(e, horizon) << i;
+    if (e > 0) {
+      ASSERT_GT(d2, reach(e - 1)) << i << ": listed from step " << e << " but can meet before";
+    }
+    ASSERT_LE(d2, reach(e + 1) * (1 + Q(1) / Q(std::exp2(40)))) << i << ": step " << e << " is too early";
+    near_integer += e > 0;
+  }
+  EXPECT_GT(near_integer, 10000);
+}
+
+TEST(pair_list, a_pair_that_meets_exactly_when_the_horizon_ends_is_listed_and_its_contact_found) {
+  // Two unit circles, centres ±(1 + H) apart from the origin, closing at v = 60 each (every move exact):
+  // world H is the first in which they touch, exactly tangent, and the step from it exchanges their
+  // velocities. A list built at world 0 for horizon H must hold the pair: its skin is within 2^-36 of H
+  // (kSpeedBound) plus a rounding allowance of about 2^-52 relative, so any speed bound below
+  // (1/60)(1 − 2^-48) drops the pair at H = 1, and the engine then misses the contact (checked against step_all_pairs).
+  for (const std::uint64_t h : {1u, 2u, 7u, 16u, 100u, 1000u}) {
+    const double c = 1 + static_cast<double>(h);
+    const Circles w{{-c, 0, 60, 0, 1}, {c, 0, -60, 0, 1}};
+    Engine e{World{w}, {.threads = 1, .keep_pairs = true, .horizon = h}};
+    const std::vector<CandidatePair> listed = e.candidates();
+    EXPECT_EQ(listed, (std::vector<CandidatePair>{{0, 1}})) << "H = " << h;
+    EXPECT_EQ(first_divergence(w, h, static_cast<int>(h) + 3), 0) << "H = " << h;
+    // One step of gap more than the horizon covers: the pair cannot meet before the list ends, and is not
+    // listed (the skin is not loose by a whole step either).
+    const Circles farther{{-c - 1, 0, 60, 0, 1}, {c + 1, 0, -60, 0, 1}};
+    EXPECT_TRUE(Engine(World{farther}, {.threads = 1, .keep_pairs = true, .horizon = h}).candidates().empty())
+        << "H = " << h;
+  }
+}
+
+TEST(pair_list, a_pair_whose_rounding_carries_it_half_an_ulp_further_every_step_is_listed) {
+  // Above 2^53 the ulp is 2: a move of v/60 = 1 + 2^-40 rounds up to 2 every step, one half ulp more than the
+  // velocity moves it, which is |p'|·2^-53: the drift term's edge on one axis. Circles at 2^53 and
+  // 2^53 + 2 + 4H close by 4 per step and first touch in world H; the skin covers 2H only with the drift
+  // term (the speed term alone gives H·(1 + 2^-40)), so a drift bound below 2^-53 drops the pair.
+  const double v = 60 + 0x1p-40 * 60;
+  ASSERT_EQ(v / 60, 1 + 0x1p-40);
+  for (const std::uint64_t h : {1u, 3u, 16u, 64u}) {
+    const double a = 0x1p53, b = 0x1p53 + 2 + 4 * static_cast<double>(h);
+    const Circles w{{a, 0, v, 0, 1}, {b, 0, -v, 0, 1}};
+    ASSERT_EQ(advance_rounded(a, v), a + 2);
+    Engine e{World{w}, {.threads = 1, .keep_pairs = true, .horizon = h}};
+    EXPECT_EQ(e.candidates(), (std::vector<CandidatePair>{{0, 1}})) << "H = " << h;
+    EXPECT_EQ(first_divergence(w, h, static_cast<int>(h) + 3), 0) << "H = " << h;
+    // They do meet in world H: the step from it exchanges velocities.
+    Engine plain{World{w}, {.threads = 1, .keep_pairs = false}};
+    for (std::uint64_t s = 0; s <= h; ++s) plain.step();
+    EXPECT_EQ(plain.world().circles()[0][2], -v) << "H = " << h;
+  }
+}
+
+TEST(pair_list, every_horizon_and_thread_count_gives_the_same_bits_on_a_busy_world) {
+  // 3000 circles at 10% coverage with contacts every step: fixed horizons from 0 to 64, the schedule's own,
+  // and lists for each step alone, on one and two threads, all equal after 40 steps.
+  std::mt19937_64 g(3000);
+  std::uniform_real_distribution<double> unit(0, 1);
+  Circles w;
+  for (int k = 0; k < 3000; ++k)
+    w.push_back({600 * unit(g), 600 * unit(g), 200 * unit(g) - 100, 200 * unit(g) - 100, 2 + 4 * unit(g)});
+  Engine plain{World{w}, {.threads = 1, .keep_pairs = false}};
+  for (int s = 0; s < 40; ++s) plain.step();
+  const Circles want = plain.world().circles();
+  EXPECT_GT(plain.stats().contacts, 1000u) << "too few contacts to mean anything";
+  for (const unsigned threads : {1u, 2u})
+    for (const std::uint64_t h : {0u, 1u, 2u, 5u, 17u, 64u}) {
+      Engine e{World{w}, {.threads = threads, .keep_pairs = true, .horizon = h}};
+      for (int s = 0; s < 40; ++s) e.step();
+      EXPECT_EQ(e.world().circles(), want) << "H = " << h << ", " << threads << " threads";
+      if (h > 0) {
+        EXPECT_LE(e.stats().rebuilds, 40 / (h + 1) + 1) << "H = " << h;
+      }
+    }
+}
+
+TEST(pair_list, the_schedule_lengthens_the_horizon_while_pairs_are_cheap_and_shortens_it_when_they_are_not) {
+  HorizonSchedule s;
+  EXPECT_EQ(s.horizon(), HorizonSchedule::kFirstHorizon);
+  ASSERT_EQ(s.horizon(), 4u);
+  // At H = 4 a rebuild of 1000 circles costs 8·1000/5 = 1600 pair tests a step. No pairs: far below, ×4.
+  s.update(0, 1000);
+  EXPECT_EQ(s.horizon(), 16u);
+  // At H = 16 the share is 8000/17 ≈ 471 a step: 200 a step (3400 over the 17 steps) is below half, ×2.
+  s.update(3400, 1000);
+  EXPECT_EQ(s.horizon(), 32u);
+  // At H = 32 the share is 8000/33 ≈ 242: 200 a step is within a factor 2, kept; 600 is too many, halved.
+  s.update(200 * 33, 1000);
+  EXPECT_EQ(s.horizon(), 32u);
+  s.update(600 * 33, 1000);
+  EXPECT_EQ(s.horizon(), 16u);
+  for (int i = 0; i < 40; ++i) s.update(0, 1000);
+  EXPECT_EQ(s.horizon(), HorizonSchedule::kMaxHorizon);
+  s.collapse();
+  EXPECT_EQ(s.horizon(), 0u);
+  s.update(0, 10);
+  EXPECT_EQ(s.horizon(), 1u);
+}
+
+}  // namespace
+}  // namespace circles::impl
