@@ -1,6 +1,6 @@
 // impl/rounding: RN(p + v/60) against the exact oracle, spec::nearest_double(exact(p) + exact(v)/60).
 //
-// Inputs come from the input classes of shared/notes/exactness.md §1 (random bits, related exponents,
+// Inputs come from the input classes of docs/rounding.md (random bits, related exponents,
 // physics-like, close magnitudes, near midpoints, exact ties, p ≈ −v/60, subnormals, near DBL_MAX, zeros,
 // small integers, exponent gaps), drawn from fixed-seed std::mt19937_64 streams and, where a class needs
 // an exact property (a tie, a distance from a midpoint), constructed exactly with rationals.
