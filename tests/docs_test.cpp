@@ -1,7 +1,7 @@
 // Keeps docs/ and the code in step: docs/math.md lists each equation with the oracle functions that
-// transcribe it, docs/spec-notes.md lists the notes, and both name tests; and the repository stands alone: no
-// file names a path outside it, and every link in its Markdown leads to a file and heading inside it. These
-// tests read the files.
+// transcribe it, docs/spec-notes.md lists the notes, and both name tests; docs/protocol.md's command table is the
+// program's; and the repository stands alone: no file names a path outside it, and every link in its Markdown
+// leads to a file and heading inside it. These tests read the files, and run the program (CIRCLES_PROGRAM).
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
@@ -280,6 +280,63 @@ TEST(docs, every_link_in_the_markdown_leads_to_a_file_and_heading_inside_the_rep
     }
   }
   EXPECT_GT(links, 50);
+}
+
+// The rows of docs/protocol.md's command table: the cell `circles COMMAND [--option ...]`, unescaped.
+std::vector<std::string> commands_in_protocol_md() {
+  std::vector<std::string> rows;
+  bool in_table = false;
+  const std::regex row(R"(^\| `(circles[^`]*)` \|.*)");
+  for (const std::string& line : lines_of("docs/protocol.md")) {
+    if (line == "| command | what |") in_table = true;
+    if (!in_table) continue;
+    if (line.empty()) break;
+    std::smatch r;
+    if (!std::regex_match(line, r, row)) continue;
+    rows.push_back(std::regex_replace(r[1].str(), std::regex(R"(\\\|)"), "|"));
+  }
+  return rows;
+}
+
+// The subcommands `circles --help` lists (CLI11: "Subcommands:", then one "  name  description" line each).
+std::set<std::string> commands_of_the_program() {
+  const Output help = output_of(std::string("'") + CIRCLES_PROGRAM + "' --help");
+  EXPECT_EQ(help.status, 0);
+  std::set<std::string> commands;
+  std::istringstream lines(help.text);
+  bool listed = false;
+  const std::regex command(R"(^  ([a-z][a-z-]*)\s.*)");
+  for (std::string line; std::getline(lines, line);) {
+    if (line.starts_with("Subcommands:")) listed = true;
+    std::smatch c;
+    if (listed && std::regex_match(line, c, command)) commands.insert(c[1]);
+  }
+  return commands;
+}
+
+TEST(docs, protocol_md_lists_every_command_of_the_program_with_options_it_takes) {
+  const std::vector<std::string> rows = commands_in_protocol_md();
+  EXPECT_GE(rows.size(), 7u);
+  std::set<std::string> documented;
+  const std::regex subcommand(R"(^circles ([a-z][a-z-]*)(?: .*)?$)"), option(R"(--[a-z][a-z-]*)"),
+      engines(R"(--engine ([a-z|]+))");
+  for (const std::string& row : rows) {
+    std::smatch c;
+    const std::string command = std::regex_match(row, c, subcommand) ? c[1].str() : "";
+    if (!command.empty()) documented.insert(command);
+    const Output help = output_of(std::string("'") + CIRCLES_PROGRAM + "' " + command + " --help");
+    ASSERT_EQ(help.status, 0) << "circles " << command << " --help";
+    for (std::sregex_iterator o(row.begin(), row.end(), option), end; o != end; ++o)
+      EXPECT_TRUE(std::regex_search(help.text, std::regex("(^|[^a-z-])" + o->str() + "([^a-z-]|$)")))
+          << "docs/protocol.md gives `circles " << command << "` the option " << o->str() << ", which it does not take";
+    for (std::sregex_iterator e(row.begin(), row.end(), engines), end; e != end; ++e) {
+      std::istringstream names((*e)[1].str());
+      for (std::string name; std::getline(names, name, '|');)
+        EXPECT_TRUE(std::regex_search(help.text, std::regex("\\b" + name + "\\b")))
+            << "docs/protocol.md names the engine " << name << " for `circles " << command << "`";
+    }
+  }
+  EXPECT_EQ(documented, commands_of_the_program());
 }
 
 }  // namespace
