@@ -1,4 +1,4 @@
-// The oracle: equations (1)-(9) of the seed (shared/seed/circles-spec.txt), transcribed one function per
+// The oracle: equations (1)-(9) of the circles spec (docs/math.md restates each), transcribed one function per
 // symbol, one branch per case, in the seed's order. Slow on purpose: sets, exact rationals, no shortcuts.
 //
 // Conventions (the seed's notation on the left):

@@ -1,7 +1,14 @@
 // Keeps docs/ and the code in step: docs/math.md lists each equation with the oracle functions that
-// transcribe it, docs/spec-notes.md lists the notes, and both name tests. These tests read the files.
+// transcribe it, docs/spec-notes.md lists the notes, and both name tests; docs/protocol.md's command table is the
+// program's; and the repository stands alone: no file names a path outside it, and every link in its Markdown
+// leads to a file and heading inside it. These tests read the files, and run the program (CIRCLES_PROGRAM).
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -14,6 +21,24 @@
 namespace {
 
 const std::filesystem::path root = CIRCLES_SOURCE_DIR;
+
+// What `command` (run by /bin/sh) writes on stdout, and its exit status.
+struct Output {
+  std::string text;
+  int status = -1;
+};
+Output output_of(const std::string& command) {
+  Output out;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return out;
+  char chunk[4096];
+  for (std::size_t got; (got = std::fread(chunk, 1, sizeof chunk, pipe)) > 0;) out.text.append(chunk, got);
+  const int status = pclose(pipe);
+  out.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return out;
+}
+
+std::string quoted(const std::filesystem::path& path) { return "'" + path.string() + "'"; }
 
 std::vector<std::string> lines_of(const std::filesystem::path& relative) {
   std::ifstream in(root / relative);
@@ -164,6 +189,154 @@ TEST(docs, engine_md_names_only_files_and_code_that_exist) {
   }
   EXPECT_GE(files, 5);
   EXPECT_GE(names, 10);
+}
+
+// The files the repository holds: git's list where the tree is a git checkout, else every file below the root
+// but .git and the build directories (.gitignore's build*/).
+std::vector<std::filesystem::path> repository_files() {
+  std::vector<std::filesystem::path> files;
+  const Output listed = output_of("git -C " + quoted(root) + " ls-files -z 2>/dev/null");
+  if (listed.status == 0 && !listed.text.empty()) {
+    for (std::size_t at = 0; at < listed.text.size();) {
+      const std::size_t end = listed.text.find('\0', at);
+      files.emplace_back(listed.text.substr(at, end - at));
+      at = end == std::string::npos ? listed.text.size() : end + 1;
+    }
+    return files;
+  }
+  for (auto entry = std::filesystem::recursive_directory_iterator(root);
+       entry != std::filesystem::recursive_directory_iterator(); ++entry) {
+    const std::string name = entry->path().filename().string();
+    if (entry->is_directory() && (name == ".git" || (entry.depth() == 0 && name.starts_with("build")))) {
+      entry.disable_recursion_pending();
+    } else if (entry->is_regular_file()) {
+      files.push_back(std::filesystem::relative(entry->path(), root));
+    }
+  }
+  return files;
+}
+
+// A clone has only the repository: nothing in it may cite the seed's or the team's notes' location, or a path of
+// the machine it was written on. (The brackets keep this file from matching its own patterns.)
+TEST(docs, no_file_names_a_path_outside_the_repository) {
+  const std::regex outside(
+      R"(/work[/]|shared[/](seed|notes|hooks)|circles-spec[.]txt|exactness[.]md|notes[/]GUIDE[.]md|/home[/]|/root[/])");
+  const std::vector<std::filesystem::path> files = repository_files();
+  EXPECT_GT(files.size(), 100u);
+  for (const std::filesystem::path& file : files) {
+    const std::string text = text_of(file);
+    std::size_t line = 1, at = 0;
+    for (std::sregex_iterator m(text.begin(), text.end(), outside), end; m != end; ++m) {
+      line += static_cast<std::size_t>(std::count(text.begin() + static_cast<std::ptrdiff_t>(at),
+                                                  text.begin() + m->position(), '\n'));
+      at = static_cast<std::size_t>(m->position());
+      ADD_FAILURE() << file.string() << ":" << line << " names " << m->str() << ", a path outside the repository";
+    }
+  }
+}
+
+// GitHub's anchor of a heading: lower case, spaces as hyphens, every other character but letters, digits, _ and -
+// dropped ("## (3) intersect — `spec::intersect`" is #3-intersect--specintersect).
+std::set<std::string> anchors_of(const std::filesystem::path& doc) {
+  std::set<std::string> anchors;
+  const std::regex heading(R"(^#+ (.*)$)");
+  for (const std::string& line : lines_of(doc)) {
+    std::smatch h;
+    if (!std::regex_match(line, h, heading)) continue;
+    std::string anchor;
+    for (const char c : h[1].str()) {
+      const unsigned char b = static_cast<unsigned char>(c);
+      if (std::isalnum(b) || c == '_' || c == '-') anchor += static_cast<char>(std::tolower(b));
+      else if (c == ' ') anchor += '-';
+    }
+    anchors.insert(anchor);
+  }
+  return anchors;
+}
+
+TEST(docs, every_link_in_the_markdown_leads_to_a_file_and_heading_inside_the_repository) {
+  const std::regex link(R"(\]\(([^)\s#]*)(#[^)\s]*)?\))"), scheme(R"(^[a-z]+:.*)");
+  const std::filesystem::path inside = std::filesystem::weakly_canonical(root);
+  int links = 0;
+  for (const std::filesystem::path& doc : repository_files()) {
+    if (doc.extension() != ".md") continue;
+    const std::string text = text_of(doc);
+    for (std::sregex_iterator m(text.begin(), text.end(), link), end; m != end; ++m) {
+      const std::string target = (*m)[1], anchor = (*m)[2];
+      if (std::regex_match(target, scheme)) continue;  // https:, mailto:
+      ++links;
+      const std::filesystem::path to = target.empty() ? doc : (doc.parent_path() / target).lexically_normal();
+      const std::filesystem::path absolute = std::filesystem::weakly_canonical(root / to);
+      const auto [in, rest] = std::mismatch(inside.begin(), inside.end(), absolute.begin(), absolute.end());
+      EXPECT_TRUE(in == inside.end()) << doc.string() << " links " << target << ", outside the repository";
+      if (!std::filesystem::exists(absolute)) {
+        ADD_FAILURE() << doc.string() << " links " << target << ", which does not exist";
+        continue;
+      }
+      if (!anchor.empty() && to.extension() == ".md") {
+        EXPECT_TRUE(anchors_of(to).contains(anchor.substr(1))) << doc.string() << " links " << target << anchor
+                                                                 << ", a heading " << to.string() << " does not have";
+      }
+    }
+  }
+  EXPECT_GT(links, 50);
+}
+
+// The rows of docs/protocol.md's command table: the cell `circles COMMAND [--option ...]`, unescaped.
+std::vector<std::string> commands_in_protocol_md() {
+  std::vector<std::string> rows;
+  bool in_table = false;
+  const std::regex row(R"(^\| `(circles[^`]*)` \|.*)");
+  for (const std::string& line : lines_of("docs/protocol.md")) {
+    if (line == "| command | what |") in_table = true;
+    if (!in_table) continue;
+    if (line.empty()) break;
+    std::smatch r;
+    if (!std::regex_match(line, r, row)) continue;
+    rows.push_back(std::regex_replace(r[1].str(), std::regex(R"(\\\|)"), "|"));
+  }
+  return rows;
+}
+
+// The subcommands `circles --help` lists (CLI11: "Subcommands:", then one "  name  description" line each).
+std::set<std::string> commands_of_the_program() {
+  const Output help = output_of(std::string("'") + CIRCLES_PROGRAM + "' --help");
+  EXPECT_EQ(help.status, 0);
+  std::set<std::string> commands;
+  std::istringstream lines(help.text);
+  bool listed = false;
+  const std::regex command(R"(^  ([a-z][a-z-]*)\s.*)");
+  for (std::string line; std::getline(lines, line);) {
+    if (line.starts_with("Subcommands:")) listed = true;
+    std::smatch c;
+    if (listed && std::regex_match(line, c, command)) commands.insert(c[1]);
+  }
+  return commands;
+}
+
+TEST(docs, protocol_md_lists_every_command_of_the_program_with_options_it_takes) {
+  const std::vector<std::string> rows = commands_in_protocol_md();
+  EXPECT_GE(rows.size(), 7u);
+  std::set<std::string> documented;
+  const std::regex subcommand(R"(^circles ([a-z][a-z-]*)(?: .*)?$)"), option(R"(--[a-z][a-z-]*)"),
+      engines(R"(--engine ([a-z|]+))");
+  for (const std::string& row : rows) {
+    std::smatch c;
+    const std::string command = std::regex_match(row, c, subcommand) ? c[1].str() : "";
+    if (!command.empty()) documented.insert(command);
+    const Output help = output_of(std::string("'") + CIRCLES_PROGRAM + "' " + command + " --help");
+    ASSERT_EQ(help.status, 0) << "circles " << command << " --help";
+    for (std::sregex_iterator o(row.begin(), row.end(), option), end; o != end; ++o)
+      EXPECT_TRUE(std::regex_search(help.text, std::regex("(^|[^a-z-])" + o->str() + "([^a-z-]|$)")))
+          << "docs/protocol.md gives `circles " << command << "` the option " << o->str() << ", which it does not take";
+    for (std::sregex_iterator e(row.begin(), row.end(), engines), end; e != end; ++e) {
+      std::istringstream names((*e)[1].str());
+      for (std::string name; std::getline(names, name, '|');)
+        EXPECT_TRUE(std::regex_search(help.text, std::regex("\\b" + name + "\\b")))
+            << "docs/protocol.md names the engine " << name << " for `circles " << command << "`";
+    }
+  }
+  EXPECT_EQ(documented, commands_of_the_program());
 }
 
 }  // namespace

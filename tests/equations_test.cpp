@@ -157,6 +157,15 @@ TEST(e, is_undefined_for_two_incomparable_circles) {
   EXPECT_EQ(e(c, LiteralWorld{at(0, 1, 1), at(1, 0, 1)}), std::nullopt);
 }
 
+// Incomparability is necessary for an undefined e, not sufficient: a third contact below both is the least.
+TEST(e, is_defined_for_incomparable_circles_when_a_third_is_below_both) {
+  const Circle a = at(0, 2, 1), b = at(2, 0, 1), d = at(0, 0, 1);
+  ASSERT_EQ(m(a, b), b);  // a and b are incomparable: each argument order "wins"
+  ASSERT_EQ(m(b, a), a);
+  EXPECT_EQ(e(at(1, 1, 2), LiteralWorld{a, b, d}), d);
+  EXPECT_EQ(e(at(1, 1, 2), LiteralWorld{a, b}), std::nullopt);
+}
+
 TEST(e, is_defined_in_the_resolved_profile_where_the_literal_one_is_not) {
   // (0, 1, …) <lex (1, 0, …): px decides.
   const Indexed c{0, at(0, 0, 1)}, a{1, at(1, 0, 1)}, b{2, at(0, 1, 1)};

@@ -13,6 +13,8 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <fstream>
+#include <iterator>
 #include <map>
 #include <numeric>
 #include <random>
@@ -407,6 +409,24 @@ const Q k = (power(1 + u, 5) - 1) / power(1 - u, 5);
 const Q gamma_ = 3 * k + 3 * power(1 + u, 3);
 // The least absolute term c with (c − η)(1 − u) ≥ γ(b + η), for squares off by at most b.
 Q least_absolute(const Q& b) { return eta + gamma_ * (b + eta) / (1 - u); }
+// Stage A′: the per-coordinate absolute error after halving and scaling, the bound on an exact scaled coordinate
+// (the computed one is < 4), and the resulting error of a square.
+const Q rescaled_a = eta * (1 + pow2(-1020));
+const Q rescaled_R = (4 + rescaled_a) / (1 - u);
+const Q rescaled_b = 2 * rescaled_R * (1 + u) * rescaled_a + rescaled_a * rescaled_a;
+
+// x ≥ 1 to 17 significant digits, rounded from its exact value (half up), as docs/predicate.md prints the
+// constants. Printing through a double would round twice: k/u is 5.00000000000000388…, and %.17g of the double
+// nearest to it gives 5.0000000000000036.
+std::string decimal17(const Q& x) {
+  const Z whole = numerator(x) / denominator(x);
+  const std::size_t before_point = whole.str().size();
+  Z scale = 1;
+  for (std::size_t d = before_point; d < 17; ++d) scale *= 10;
+  const Z digits = (2 * numerator(x) * scale + denominator(x)) / (2 * denominator(x));
+  const std::string text = digits.str();
+  return text.substr(0, before_point) + "." + text.substr(before_point);
+}
 
 TEST(error_bounds, relative_factor_2_pow_minus_50_covers_five_roundings_and_is_tight_within_1_6) {
   const Q c = spec::exact(kRelative);
@@ -414,7 +434,7 @@ TEST(error_bounds, relative_factor_2_pow_minus_50_covers_five_roundings_and_is_t
   EXPECT_LE(c / k, Q(8, 5));
   EXPECT_GT(k, 5 * u);                // five roundings, not fewer
   EXPECT_LT(k, Q(50001, 10000) * u);  // the 5.0001u of the design note
-  std::printf("  k = %.17g u; kRelative = %.17g k\n", to_double(k / u), to_double(c / k));
+  std::printf("  k = %su; kRelative = %.17g k\n", decimal17(k / u).c_str(), to_double(c / k));
 }
 
 TEST(error_bounds, stage_a_absolute_term_covers_three_underflowing_squares_and_is_the_least_power_of_two) {
@@ -423,20 +443,28 @@ TEST(error_bounds, stage_a_absolute_term_covers_three_underflowing_squares_and_i
   EXPECT_GE(c, need);
   EXPECT_LT(c / 2, need);
   EXPECT_LE(c / need, 2);
-  std::printf("  c_min = %.17g eta; kAbsolute = %.17g c_min\n", to_double(need / eta), to_double(c / need));
+  std::printf("  c_min = %s eta; kAbsolute = %.17g c_min\n", decimal17(need / eta).c_str(), to_double(c / need));
 }
 
 TEST(error_bounds, rescaled_absolute_term_covers_scaling_and_halving_errors_and_is_the_least_power_of_two) {
-  const Q a = eta * (1 + pow2(-1020));  // per-coordinate absolute error after halving and scaling
-  const Q R = (4 + a) / (1 - u);        // |exact scaled coordinate| < R, as the computed one is < 4
-  const Q b = 2 * R * (1 + u) * a + a * a;
-  const Q need = least_absolute(b);
+  const Q need = least_absolute(rescaled_b);
   const Q c = spec::exact(kAbsoluteRescaled);
   EXPECT_GE(c, need);
   EXPECT_LT(c / 2, need);
   EXPECT_LE(c / need, Q(8, 7));  // 32η against 28η
-  std::printf("  b = %.17g eta, c_min = %.17g eta; kAbsoluteRescaled = %.17g c_min\n", to_double(b / eta),
-              to_double(need / eta), to_double(c / need));
+  std::printf("  b = %s eta, c_min = %s eta; kAbsoluteRescaled = %.17g c_min\n", decimal17(rescaled_b / eta).c_str(),
+              decimal17(need / eta).c_str(), to_double(c / need));
+}
+
+TEST(error_bounds, predicate_md_prints_each_constant_from_its_exact_value) {
+  std::ifstream in(std::string(CIRCLES_SOURCE_DIR) + "/docs/predicate.md");
+  const std::string doc{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  ASSERT_FALSE(doc.empty());
+  EXPECT_EQ(decimal17(k / u), "5.0000000000000039");  // by hand: k/u = 5 + 35u + O(u²) = 5.00000000000000389
+  for (const std::string& figure :
+       {"k = " + decimal17(k / u) + "u", "c_{\\min} = " + decimal17(least_absolute(0) / eta) + "\\eta",
+        "b = " + decimal17(rescaled_b / eta) + "\\eta", "c_{\\min} = " + decimal17(least_absolute(rescaled_b) / eta) + "\\eta"})
+    EXPECT_NE(doc.find(figure), std::string::npos) << "docs/predicate.md does not print " << figure;
 }
 
 TEST(error_bounds, rescale_threshold_leaves_stage_a_absolute_term_negligible_above_it) {

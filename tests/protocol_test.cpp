@@ -145,6 +145,7 @@ TEST(protocol, rejects_a_line_with_a_wrong_id) {
   const std::string expected = R"(line 4: "id": expected an integer from 0 to 18446744073709551615, found )";
   EXPECT_EQ(refusal(R"({"id": -1, "circles": []})"), expected + "-1");
   EXPECT_EQ(refusal(R"({"id": 1.0, "circles": []})"), expected + "1.0");
+  EXPECT_EQ(refusal(R"({"id": 1e2, "circles": []})"), expected + "1e2");  // an integer, but not an integer token
   EXPECT_EQ(refusal(R"({"id": 18446744073709551616, "circles": []})"), expected + "18446744073709551616");
   EXPECT_EQ(refusal(R"({"id": "1", "circles": []})"), expected + "a string");
   EXPECT_EQ(refusal(R"({"id": null, "circles": []})"), expected + "null");

@@ -1,5 +1,6 @@
 // The exact bridges between binary64 and Q: spec::exact and spec::nearest_double.
 // Expected values are derived by hand from the definition of binary64, never from the code under test.
+#include "spec/oracle.hpp"
 #include "spec/rational.hpp"
 
 #include <gtest/gtest.h>
@@ -61,6 +62,16 @@ TEST(nearest_double, overflows_to_infinity_exactly_at_the_ieee_threshold) {
 
 TEST(nearest_double, gives_positive_zero_for_an_exact_zero) {
   EXPECT_FALSE(std::signbit(nearest_double(Q(0))));
+}
+
+// So the oracle does write −0: `circles serve --engine oracle` answers [[0, 0, -5e-324, 0, 1]] with px = -0.0.
+TEST(nearest_double, gives_minus_0_for_a_negative_value_that_underflows) {
+  const double tiny = std::numeric_limits<double>::denorm_min();
+  EXPECT_TRUE(std::signbit(nearest_double(-pow2(-1075))));  // a tie between −0 and −2^-1074: even is −0
+  EXPECT_EQ(nearest_double(-pow2(-1075)), 0.0);
+  const double px = resolved_step_rounded({{0, 0, -tiny, 0, 1}}).at(0)[0];  // −2^-1074/60, far below half a quantum
+  EXPECT_EQ(px, 0.0);
+  EXPECT_TRUE(std::signbit(px));
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
 // impl/rounding: RN(p + v/60) against the exact oracle, spec::nearest_double(exact(p) + exact(v)/60).
 //
-// Inputs come from the input classes of shared/notes/exactness.md §1 (random bits, related exponents,
+// Inputs come from the input classes of docs/rounding.md (random bits, related exponents,
 // physics-like, close magnitudes, near midpoints, exact ties, p ≈ −v/60, subnormals, near DBL_MAX, zeros,
 // small integers, exponent gaps), drawn from fixed-seed std::mt19937_64 streams and, where a class needs
 // an exact property (a tie, a distance from a midpoint), constructed exactly with rationals.
@@ -461,6 +461,20 @@ TEST(advance_rounded, exact_ties_round_to_even) {
   EXPECT_EQ(advance_rounded(0.0, 30 * kDenormMin), 0.0);      // 2^-1075 → 0 (even)
   EXPECT_EQ(advance_rounded(0.0, 90 * kDenormMin), 2 * kDenormMin);  // 3·2^-1075 → 2·2^-1074
   EXPECT_EQ(advance_rounded(kDenormMin, 30 * kDenormMin), 2 * kDenormMin);  // 3·2^-1075
+  // docs/rounding.md, step 6: a tie is taken by the r = 0 rule, never by the certificate, whose |f| is at least
+  // half a gap. At p = 2^53, v = 60: q = 1, r = 0, (s, e) = TwoSum(2^53, 1) = (2^53, 1), t = e, and
+  // (y, f) = TwoSum(s, t) = (2^53, 1); the gap below y is G = 1, so |f| = G, twice H = G/2.
+  RoundingPath path{};
+  EXPECT_EQ(advance_rounded_traced(0x1p53, 60, path), 0x1p53);
+  EXPECT_EQ(path, RoundingPath::exact_sum);
+  const double q = 60 * rounding::kC;
+  ASSERT_EQ(q, 1.0);
+  ASSERT_EQ(rounding::exact_remainder(60, q), 0.0);
+  const double y = 0x1p53 + q, f = (0x1p53 - y) + q;  // TwoSum(2^53, 1) with |2^53| ≥ |1|: Fast2Sum is exact
+  const double G = y - std::nextafter(y, 0.0);
+  EXPECT_EQ(y, 0x1p53);
+  EXPECT_EQ(G, 1.0);
+  EXPECT_EQ(std::fabs(f), G);
 }
 
 TEST(advance_rounded, zero_results_follow_the_sign_convention) {

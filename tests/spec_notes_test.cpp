@@ -1,10 +1,15 @@
 // One test per note of docs/spec-notes.md: each shows the defect, ambiguity or surprise on its minimal
 // exact example world and pins the chosen resolution, so it fails if the documented behaviour changes.
 // The note's heading anchor is the test's name.
+#include "cli/render.hpp"
+#include "cli/video.hpp"
+#include "impl/predicate.hpp"
 #include "spec/oracle.hpp"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
 #include <type_traits>
 
 namespace circles::spec {
@@ -154,6 +159,128 @@ TEST(spec_notes, i_returns_a_set) {
 TEST(spec_notes, e_ignores_c) {
   const LiteralWorld S{at(0, 0, 1), at(1, 1, 1)};
   EXPECT_EQ(e(at(100, 100, 1), S), e(at(-100, 0, 7), S));
+}
+
+// infinite-worlds: P(C) holds infinite sets, where e may have no value even under a total order.
+TEST(spec_notes, infinite_worlds) {
+  // c touches every (1/n, 0, 0, 0, 1); among the first N of them the least is the N-th, below all before it, so
+  // in the infinite set every contact has one below it and none is least.
+  const Circle c = at(0, 0, 2);
+  LiteralWorld W{c};
+  for (int n = 1; n <= 20; ++n) {
+    const Circle next = at(Q(1, n), 0, 1);
+    W.insert(next);
+    const LiteralWorld S = i(c, W);
+    EXPECT_EQ(S.size(), static_cast<std::size_t>(n));
+    ASSERT_EQ(e(c, S), next) << "the least of the first " << n << " contacts";
+    // The resolved profile's total order has the same least element: a total order does not help.
+    EXPECT_EQ(lex_compare(next, at(Q(1, n + 1), 0, 1)), 1);
+  }
+}
+
+// render-function: the seed names r: P(C) → M_1280×720 and says nothing more; these are the project's choices.
+TEST(spec_notes, render_function) {
+  EXPECT_EQ(cli::kFrameWidth, 1280);
+  EXPECT_EQ(cli::kFrameHeight, 720);
+  cli::Frame frame;
+  frame.draw({{300.5, 100.5, 0, 0, 3}}, cli::View::pixels());
+  EXPECT_EQ(frame.pixel(300, 100), cli::fill_colour(0));  // one unit a pixel, from the top-left corner
+  EXPECT_EQ(frame.pixel(300, 719 - 100), cli::kBackground);  // y points down: not the mirrored row
+  EXPECT_EQ(Q(cli::kVideoFrameRate) * dt, 1);               // a world every Δt: the seed's own pace
+}
+
+// overflow: the seed is over ℝ; doubles end at DBL_MAX.
+TEST(spec_notes, overflow) {
+  constexpr double M = std::numeric_limits<double>::max();
+  // The exact next position 61M/60 is a rational above the largest double, so it rounds to +∞.
+  const Sequence next = resolved_step({circle(exact(M), 0, exact(M), 0, 1)});
+  EXPECT_EQ(next.at(0).p.x(), exact(M) * 61 / 60);
+  EXPECT_GT(next.at(0).p.x(), exact(M));
+  EXPECT_TRUE(std::isinf(resolved_step_rounded({{M, 0, M, 0, 1}}).at(0)[0]));
+  // (3) near the top of the range: M − (−M) overflows in doubles, yet the circles touch exactly, and one ulp
+  // less radius parts them; the oracle and the double engine's predicate both decide it exactly.
+  EXPECT_TRUE(std::isinf(M - (-M)));
+  EXPECT_TRUE(intersect(circle(-exact(M), 0, 0, 0, exact(M)), circle(exact(M), 0, 0, 0, exact(M))));
+  EXPECT_TRUE(impl::intersect_exact(-M, 0, M, M, 0, M));
+  const double below = std::nextafter(M, 0.0);
+  EXPECT_FALSE(intersect(circle(-exact(M), 0, 0, 0, exact(M)), circle(exact(M), 0, 0, 0, exact(below))));
+  EXPECT_FALSE(impl::intersect_exact(-M, 0, M, M, 0, below));
+}
+
+// e-second-case: (8)'s second case, "we already proved S ≠ ∅", defines nothing; e is partial and f never asks it.
+TEST(spec_notes, e_second_case) {
+  const Circle c = circle(0, 0, 60, 0, 1);
+  EXPECT_EQ(e(c, LiteralWorld{}), std::nullopt);
+  EXPECT_EQ(e(Indexed{0, c}, World<Indexed>{}), std::nullopt);
+  EXPECT_TRUE(i(c, LiteralWorld{c}).empty());
+  EXPECT_EQ(f(c, LiteralWorld{c}), circle(1, 0, 60, 0, 1));  // u(c): the second case of (4)
+}
+
+// reflexive-needs-x-ne-c: every circle intersects itself, so without "x ≠ c" c would be its own contact.
+TEST(spec_notes, reflexive_needs_x_ne_c) {
+  const Circle c = circle(0, 0, 60, 0, 1), b = at(2, 0, 1);
+  const World<Indexed> W = resolved_world({c, b});
+  const Indexed& ci = *W.begin();
+  ASSERT_EQ(ci.c, c);
+  EXPECT_TRUE(intersect(ci, ci));
+  World<Indexed> S = i(ci, W);
+  EXPECT_EQ(S, (World<Indexed>{Indexed{1, b}}));
+  EXPECT_EQ(resolved_step({c, b}).at(0), at(0, 0, 1));  // with x ≠ c: c takes v_b = 0 and stays
+  // Without it, c joins its own S, is the least there, and would keep (60, 0) and move into b.
+  S.insert(ci);
+  EXPECT_EQ(e(ci, S), ci);
+  EXPECT_EQ(u(h(ci, *e(ci, S))).c, circle(1, 0, 60, 0, 1));
+}
+
+// containment-intersects: (3) tests the disks, so a circle inside another intersects it.
+TEST(spec_notes, containment_intersects) {
+  const Circle a = at(0, 0, 10), b = circle(1, 0, 60, 0, 1);
+  const Q distance = b.p.x() - a.p.x();
+  EXPECT_LT(distance + b.r, a.r);  // b lies inside a: the boundaries share no point
+  EXPECT_TRUE(intersect(a, b));
+  EXPECT_EQ(resolved_step({a, b}), (Sequence{circle(1, 0, 60, 0, 10), at(1, 0, 1)}));
+}
+
+// not-invariant-under-reflection: the mirror image (here also the rotation by 180°) of a world need not step to
+// the mirror image of its next world.
+TEST(spec_notes, not_invariant_under_reflection) {
+  const Sequence cradle{circle(0, 0, 60, 0, 1), at(2, 0, 1), at(4, 0, 1)};
+  const auto mirrored = [](const Sequence& w) {  // x → 4 − x, v_x → −v_x
+    Sequence out;
+    for (const Circle& c : w) out.push_back(circle(4 - c.p.x(), c.p.y(), -c.v.x(), c.v.y(), c.r));
+    return out;
+  };
+  const Sequence mirror = mirrored(cradle);
+  ASSERT_EQ(mirror, (Sequence{circle(4, 0, -60, 0, 1), at(2, 0, 1), at(0, 0, 1)}));
+  EXPECT_EQ(resolved_step(cradle), (Sequence{at(0, 0, 1), circle(3, 0, 60, 0, 1), at(4, 0, 1)}));
+  const Sequence stopped = resolved_step(mirror);
+  EXPECT_EQ(stopped, (Sequence{at(4, 0, 1), at(2, 0, 1), at(0, 0, 1)}));  // stops dead
+  EXPECT_NE(stopped, mirrored(resolved_step(cradle)));
+  EXPECT_EQ(momentum(mirror), Vec2(-60, 0));
+  EXPECT_EQ(momentum(stopped), Vec2(0, 0));
+  EXPECT_EQ(momentum(resolved_step(cradle)), Vec2(60, 0));
+  // The rotation by 180° about (2, 0), (x, y) → (4 − x, −y), v → −v, gives the same world here.
+  for (std::size_t k = 0; k < cradle.size(); ++k)
+    EXPECT_EQ(mirror[k], circle(4 - cradle[k].p.x(), -cradle[k].p.y(), -cradle[k].v.x(), -cradle[k].v.y(), 1));
+  EXPECT_TRUE(std::holds_alternative<Undefined<Circle>>(literal_step(literal_world(mirror))));
+}
+
+// u-adds-dt-v: the prose of (5) says "adding the velocity"; (5) adds Δt·v.
+TEST(spec_notes, u_adds_dt_v) {
+  const Circle c = circle(0, 0, 60, 0, 1);
+  EXPECT_EQ(u(c), circle(1, 0, 60, 0, 1));
+  EXPECT_NE(u(c).p, c.p + c.v);
+}
+
+// d-is-a-sequence: D = {w_n} is written as a set, but worlds recur and their order matters.
+TEST(spec_notes, d_is_a_sequence) {
+  const auto t = D(literal_world({at(0, 0, 1)}), 5);
+  ASSERT_EQ(t.w.size(), 6u);  // w_0 … w_5, in order
+  for (const LiteralWorld& w_n : t.w) EXPECT_EQ(w_n, t.w[0]);  // so the set {w_n} has one element
+  // The stuck pair: as a sequence of worlds it alternates; as a set it is {w_0, w_1}, in no order.
+  const Sequence pair{circle(0, 0, -60, 0, 1), circle(1, 0, 60, 0, 1)};
+  EXPECT_NE(resolved_step(pair), pair);
+  EXPECT_EQ(resolved_step(resolved_step(pair)), pair);
 }
 
 }  // namespace

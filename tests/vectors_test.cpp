@@ -257,7 +257,7 @@ TEST(vectors, a_world_whose_next_position_leaves_the_double_range_has_no_vector)
 
 TEST(vectors, the_example_in_vectors_md_is_the_vector_of_its_input) {
   // The first ```json block of docs/vectors.md, pretty-printed: every field but "case" and "source" must be
-  // what make_vector gives for its input.
+  // what make_vector gives for its input, and the whole of it the line of the default vectors it says it is.
   const std::string doc = bytes_of(root / "docs" / "vectors.md");
   const std::size_t open = doc.find("```json\n"), close = doc.find("```\n", open + 8);
   ASSERT_NE(open, std::string::npos);
@@ -269,6 +269,9 @@ TEST(vectors, the_example_in_vectors_md_is_the_vector_of_its_input) {
   with_source.seed = example["source"]["seed"];
   with_source.case_index = example["source"]["case"];
   EXPECT_EQ(json::parse(format_vector(example["case"], with_source)), example);
+  const std::size_t line = example["case"];
+  ASSERT_LT(line, default_cases().size());
+  EXPECT_EQ(default_cases()[line], example);
 }
 
 TEST(vectors, a_seed_gives_the_same_file_on_every_run_and_another_seed_another) {
