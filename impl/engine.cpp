@@ -291,14 +291,11 @@ void BasicEngine<A>::rebuild() {
   // Each pair's first step from its gap (impl/pair_list.hpp), on the radii widened by the slack alone.
   padded_.resize(n);
   for (std::size_t t = 0; t < n; ++t) padded_[t] = slack > 0 ? outward_upper(now_.r[t], slack) : now_.r[t];
-  // Most pairs the broad phase offers are decided without a square root: apart on an axis by more than the
-  // inflated radii (RN is monotone, so RN(|bx − ax|) > RN(r'_a + r'_b) implies the exact inequality), or
-  // disjoint at the inflated radii by the filter of the exact test, means never within the horizon;
-  // intersecting at the padded radii means from step 0.
+  // Most pairs the broad phase offers are decided by the filter of the exact test alone (no square root):
+  // disjoint at the inflated radii means never within the horizon, and intersecting at the padded ones means
+  // from step 0.
   const double *px = now_.px.data(), *py = now_.py.data(), *r = padded_.data(), *ri = inflated_.data();
   pairs_.build(grid_, view, threads_, horizon, [px, py, r, ri, step, horizon](std::size_t a, std::size_t b) {
-    const double reach = ri[a] + ri[b];
-    if ((std::fabs(px[b] - px[a]) > reach) | (std::fabs(py[b] - py[a]) > reach)) return kNever;
     if (intersect_filter(px[a], py[a], ri[a], px[b], py[b], ri[b]) == Decision::disjoint) return kNever;
     if (intersect_filter(px[a], py[a], r[a], px[b], py[b], r[b]) == Decision::intersect) return std::uint32_t{0};
     return first_step(px[a], py[a], r[a], px[b], py[b], r[b], step, horizon);
