@@ -46,6 +46,10 @@ std::string seconds(std::chrono::milliseconds deadline) {
 ProcessCandidate::ProcessCandidate(std::string command, std::chrono::milliseconds deadline)
     : command_(std::move(command)), deadline_(deadline) {
   std::signal(SIGPIPE, SIG_IGN);
+  start();
+}
+
+void ProcessCandidate::start() {
   int in[2], out[2];
   if (pipe2(in, O_CLOEXEC) != 0) throw BrokenCandidate(system_error("cannot create a pipe"));
   if (pipe2(out, O_CLOEXEC) != 0) {
@@ -82,10 +86,22 @@ ProcessCandidate::ProcessCandidate(std::string command, std::chrono::millisecond
   }
 }
 
-ProcessCandidate::~ProcessCandidate() {
+ProcessCandidate::~ProcessCandidate() { stop(); }
+
+void ProcessCandidate::stop() noexcept {
   kill_group();
   if (to_child_ >= 0) close(to_child_);
   if (from_child_ >= 0) close(from_child_);
+  to_child_ = from_child_ = -1;
+}
+
+void ProcessCandidate::restart() {
+  stop();
+  buffer_.clear();
+  status_.clear();
+  unanswered_ = 0;
+  ++restarts_;
+  start();
 }
 
 void ProcessCandidate::kill_group() noexcept {
@@ -174,7 +190,7 @@ Circles ProcessCandidate::read_answer(const Circles& world, std::uint64_t id) {
   ++lines_;
   Line line;
   try {
-    line = parse_line(text, lines_);
+    line = parse_line(text, lines_, kId, Reading::answer);
   } catch (const ProtocolError& e) {
     throw BrokenCandidate(name() + " wrote a malformed answer to request " + std::to_string(id) + ": " + e.what());
   }
@@ -203,6 +219,10 @@ Answers Candidate::answer_all(std::span<const Circles> worlds, std::uint64_t fir
 }
 
 Answers ProcessCandidate::answer_all(std::span<const Circles> worlds, std::uint64_t first_id) {
+  // After a fault, what the program wrote to earlier requests may still be on its way: a fresh program, so that
+  // no answer is ever taken for another request's. Then a program that crashed, hung or broke the protocol
+  // on one world is asked about the next from a clean start (as shrinking asks).
+  if (unanswered_ > 0 || pid_ <= 0) restart();
   Answers read;
   read.answers.reserve(worlds.size());
   try {
@@ -218,7 +238,6 @@ void ProcessCandidate::answer_batches(std::span<const Circles> worlds, std::uint
   std::string lines;
   std::vector<std::size_t> ends;  // the offset just past each request line in `lines`
   for (std::size_t first = 0; first < worlds.size();) {
-    if (pid_ <= 0) throw BrokenCandidate(name() + " is not running (" + status_ + ")");
     // The batch: requests first … last − 1, at least one, at most kBatchBytes unless the first alone is more.
     lines.clear();
     ends.clear();
@@ -233,8 +252,12 @@ void ProcessCandidate::answer_batches(std::span<const Circles> worlds, std::uint
       }
       ends.push_back(lines.size());
     }
+    unanswered_ += last - first;
     write_requests(lines, ends, first_id + first);
-    for (; first < last; ++first) answers.push_back(read_answer(worlds[first], first_id + first));
+    for (; first < last; ++first) {
+      answers.push_back(read_answer(worlds[first], first_id + first));
+      --unanswered_;
+    }
   }
 }
 

@@ -5,7 +5,9 @@
 //                     batch of them at a time, so that a batch shares one round trip through the pipes), read
 //                     one answer line at a time from its stdout, in order, with a deadline per request.
 //                     It runs in a process group of its own, which is killed when the candidate is destroyed,
-//                     so no process outlives the check, whatever the program does.
+//                     so no process outlives the check, whatever the program does. After a fault (a crash, a
+//                     hang, a malformed line, a wrong id or count), the next answer_all starts the program
+//                     afresh, so that no answer it wrote to an earlier request is read as another's.
 #pragma once
 
 #include "cli/engines.hpp"
@@ -81,11 +83,15 @@ class ProcessCandidate : public Candidate {
 
   Circles answer(const Circles& world, std::uint64_t id) override;
   // Writes the requests in batches of at most kBatchBytes (a larger request goes alone) and reads each batch's
-  // answers, each within the deadline of the previous answer (or of the batch's last write).
+  // answers, each within the deadline of the previous answer (or of the batch's last write). Answers are read
+  // as Reading::answer reads them (cli/protocol.hpp): unknown keys ignored, NaN and infinities as values.
+  // Restarts the program first if it stopped or a request before has no answer read (a fault in a batch).
   Answers answer_all(std::span<const Circles> worlds, std::uint64_t first_id) override;
   // Closes the program's stdin and waits, up to the deadline, for it to exit 0.
   void finish() override;
   std::string name() const override { return "the program `" + command_ + "`"; }
+  // How many times the program was started afresh after a fault.
+  std::uint64_t restarts() const { return restarts_; }
 
   // The most bytes of request lines written before their answers are read. Why a bound, and why this one: we
   // write a whole batch before reading any answer, while the candidate may answer each line as it reads it, so
@@ -98,6 +104,10 @@ class ProcessCandidate : public Candidate {
   static constexpr std::size_t kBatchBytes = 16 * 1024;
 
  private:
+  // Starts the program (throws BrokenCandidate if it cannot); stops it, and closes its pipes; both.
+  void start();
+  void stop() noexcept;
+  void restart();
   // answer_all's work: appends the answer to each of worlds, in batches of at most kBatchBytes; throws
   // BrokenCandidate at the first request without an answer.
   void answer_batches(std::span<const Circles> worlds, std::uint64_t first_id, std::vector<Circles>& answers);
@@ -117,6 +127,8 @@ class ProcessCandidate : public Candidate {
   int to_child_ = -1, from_child_ = -1;
   std::string buffer_;
   std::size_t lines_ = 0;
+  std::size_t unanswered_ = 0;  // requests written whose answers were not read
+  std::uint64_t restarts_ = 0;
   std::string status_;  // set once the program is reaped
 };
 

@@ -128,7 +128,7 @@ void print_world(std::ostream& out, const std::string& title, const Circles& w) 
     std::string line = "    #" + std::to_string(k) + " [";
     for (std::size_t f = 0; f < 5; ++f) {
       if (f) line += ", ";
-      json_number::append(line, w[k][f]);
+      json_number::append_any(line, w[k][f]);
     }
     out << line << "]\n";
   }
@@ -137,7 +137,6 @@ void print_world(std::ostream& out, const std::string& title, const Circles& w) 
 std::filesystem::path picture_path(const ConformOptions& options, const std::string& stem) {
   if (!options.svg.empty()) return options.svg;
   if (!options.save.empty()) return options.save / (stem + ".svg");
-  if (options.picture_in_temp) return std::filesystem::temp_directory_path() / ("circles-conform-" + stem + ".svg");
   return {};
 }
 
@@ -352,7 +351,15 @@ int conform(Candidate& candidate, const ConformOptions& options, std::ostream& o
       while (auto next = candidates.next()) {
         if (++queries > kMaxShrinkQueries) break;
         Ending e = Ending::checked;
-        if (auto f = checker.run(next->value(), steps, e)) {
+        std::optional<Failure> f;
+        try {
+          f = checker.run(next->value(), steps, e);
+        } catch (const BrokenCandidate&) {
+          // A simpler world on which the candidate breaks (crashes, hangs, writes a malformed line) does not
+          // show the wrong answer being shrunk; the next is asked of the program started afresh.
+          continue;
+        }
+        if (f) {
           world = *next;
           failure = std::move(f);
           ++shrinks;

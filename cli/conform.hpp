@@ -47,10 +47,9 @@ struct ConformOptions {
   // The corpus: every *.json file here is replayed first, and a new counterexample is saved here (with its
   // picture beside it). Empty: none. Created if missing.
   std::filesystem::path save{};
-  // Where to draw the counterexample's picture; empty: beside the saved file if `save` is set, else in the
-  // temporary directory if `picture_in_temp`, else nowhere.
+  // Where to draw the counterexample's picture; empty: beside the saved file if `save` is set, else nowhere
+  // (a picture is drawn only when asked for, so that runs in a loop leave nothing behind).
   std::filesystem::path svg{};
-  bool picture_in_temp = false;
 };
 
 // "i/n" → shard i of n (0 ≤ i < n). Throws std::invalid_argument with a message for --shard.

@@ -23,13 +23,26 @@ constexpr std::string_view kKeys[] = {"format", "profile", "world",  "level",   
 constexpr std::string_view kDifferenceKeys[] = {"circle", "field", "expected", "actual", "decision"};
 
 
-void append_world(std::string& out, const Circles& w) {
+// A number of an answer, which may be NaN or infinite (cli/protocol.hpp, Reading::answer): JSON has no syntax
+// for those, so they are stored as the strings "NaN", "Infinity" and "-Infinity".
+void append_answered(std::string& out, double x) {
+  if (std::isfinite(x)) return json_number::append(out, x);
+  out += '"';
+  json_number::append_any(out, x);
+  out += '"';
+}
+
+// The world asked and the expected answer are worlds of C; what the candidate answered is any numbers.
+enum class Numbers { of_c, answered };
+
+void append_world(std::string& out, const Circles& w, Numbers numbers = Numbers::of_c) {
   out += "[";
   for (std::size_t k = 0; k < w.size(); ++k) {
     out += k ? ",\n    [" : "\n    [";
     for (std::size_t f = 0; f < 5; ++f) {
       if (f) out += ", ";
-      json_number::append(out, w[k][f]);
+      if (numbers == Numbers::answered) append_answered(out, w[k][f]);
+      else json_number::append(out, w[k][f]);
     }
     out += "]";
   }
@@ -61,14 +74,15 @@ class Reader {
     return x.get<std::uint64_t>();
   }
 
-  double number(const nlohmann::json& x, const std::string& where) const {
-    const std::optional<double> d = to_double(x);
+  double number(const nlohmann::json& x, const std::string& where, Numbers numbers = Numbers::of_c) const {
+    std::optional<double> d = to_double(x);
+    if (!d && numbers == Numbers::answered && x.is_string()) d = json_number::non_finite_token(x.get<std::string>());
     if (!d) fail(where + ": expected a number, found " + x.dump());
     return *d;
   }
 
-  // A world of the resolved profile's C: finite doubles, r >= 0.
-  Circles world(const nlohmann::json& x, std::string_view key) const {
+  // A world of the resolved profile's C: finite doubles, r >= 0; or an answer, any numbers.
+  Circles world(const nlohmann::json& x, std::string_view key, Numbers numbers = Numbers::of_c) const {
     const std::string where = "key " + in_quotes(key);
     if (!x.is_array()) fail(where + ": expected an array of circles [px, py, vx, vy, r], found " + x.type_name());
     Circles w;
@@ -78,9 +92,9 @@ class Reader {
       if (!c.is_array() || c.size() != 5) fail(circle + ": expected 5 numbers [px, py, vx, vy, r]");
       std::array<double, 5> fields{};
       for (std::size_t f = 0; f < 5; ++f)
-        fields[f] = number(c[f], circle + ", field " + properties::field_name(static_cast<int>(f)));
+        fields[f] = number(c[f], circle + ", field " + properties::field_name(static_cast<int>(f)), numbers);
       try {
-        spec::check_doubles(fields, k, spec::Radii::non_negative);
+        if (numbers == Numbers::of_c) spec::check_doubles(fields, k, spec::Radii::non_negative);
       } catch (const spec::OutsideC& e) {
         fail(where + ": " + e.what());
       }
@@ -102,6 +116,11 @@ std::string to_json(const StoredCounterexample& c) {
     json_number::append(text, x);
     return text;
   };
+  const auto answered = [](double x) {
+    std::string text;
+    append_answered(text, x);
+    return text;
+  };
   std::string out = "{\n  \"format\": " + string(std::string(kFormat)) + ",\n";
   out += "  \"profile\": " + string(properties::name(c.profile)) + ",\n";
   out += "  \"world\": ";
@@ -118,7 +137,7 @@ std::string to_json(const StoredCounterexample& c) {
     const properties::Difference& d = *c.difference;
     out += "  \"difference\": {\"circle\": " + std::to_string(d.circle) + ", \"field\": " +
            string(properties::field_name(d.field)) + ", \"expected\": " + number(d.expected) +
-           ", \"actual\": " + number(d.actual) + ",\n                 \"decision\": " + string(d.decision) + "},\n";
+           ", \"actual\": " + answered(d.actual) + ",\n                 \"decision\": " + string(d.decision) + "},\n";
   }
   if (!c.expected.empty()) {
     out += "  \"expected\": ";
@@ -127,7 +146,7 @@ std::string to_json(const StoredCounterexample& c) {
   }
   if (!c.actual.empty()) {
     out += "  \"actual\": ";
-    append_world(out, c.actual);
+    append_world(out, c.actual, Numbers::answered);
     out += ",\n";
   }
   out.erase(out.size() - 2);  // the last ",\n"
@@ -168,7 +187,7 @@ StoredCounterexample from_json(std::string_view text, const std::string& source)
   if (root.contains("steps")) c.steps = read.integer(root["steps"], "steps");
   if (root.contains("step")) c.step = read.integer(root["step"], "step");
   if (root.contains("expected")) c.expected = read.world(root["expected"], "expected");
-  if (root.contains("actual")) c.actual = read.world(root["actual"], "actual");
+  if (root.contains("actual")) c.actual = read.world(root["actual"], "actual", Numbers::answered);
   if (root.contains("difference")) {
     const nlohmann::json& d = root["difference"];
     if (!d.is_object()) read.fail("key \"difference\": expected an object, found " + std::string(d.type_name()));
@@ -185,7 +204,7 @@ StoredCounterexample from_json(std::string_view text, const std::string& source)
       if (field == properties::field_name(f)) diff.field = f;
     if (diff.field < 0) read.fail("key \"difference\": field " + d["field"].dump() + " is not px, py, vx, vy or r");
     diff.expected = read.number(d["expected"], "key \"difference\": expected");
-    diff.actual = read.number(d["actual"], "key \"difference\": actual");
+    diff.actual = read.number(d["actual"], "key \"difference\": actual", Numbers::answered);
     diff.decision = read.string(d["decision"], "decision");
     c.difference = diff;
   }

@@ -53,9 +53,14 @@ class View {
   long double scale_ = 1, cx_ = 0, cy_ = 0;
 };
 
+// An answer may hold NaN, infinities or a negative radius (cli/protocol.hpp, Reading::answer): such a circle
+// has no place in the picture, and the report's lines say what it was.
+bool drawable(const std::array<double, 5>& c) { return std::isfinite(c[0]) && std::isfinite(c[1]) && std::isfinite(c[4]) && c[4] >= 0; }
+
 View fit(const CounterexamplePicture& p) {
   long double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
   const auto include = [&](const std::array<double, 5>& c) {
+    if (!drawable(c)) return;
     const long double r = c[4];
     x0 = std::min(x0, c[0] - r);
     x1 = std::max(x1, c[0] + r);
@@ -210,6 +215,7 @@ std::string counterexample_svg(const CounterexamplePicture& p) {
   if (drawn_k) {
     const double dash[] = {6, 4};
     for (const auto& [c, colour, cross] : {std::tuple{p.expected[k], kGreen, false}, std::tuple{p.actual[k], kRed, true}}) {
+      if (!drawable(c)) continue;
       set(cr, colour);
       cairo_set_line_width(cr, 0.8);
       cairo_new_path(cr);

@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 #include <string_view>
 
@@ -27,6 +28,19 @@ void append(std::string& out, double x) {
   if (written.find_first_of(".e") == std::string_view::npos) out += ".0";
 }
 
+void append_any(std::string& out, double x) {
+  if (std::isnan(x)) out += "NaN";
+  else if (std::isinf(x)) out += x > 0 ? "Infinity" : "-Infinity";
+  else append(out, x);
+}
+
+std::optional<double> non_finite_token(std::string_view token) {
+  if (token == "NaN") return std::numeric_limits<double>::quiet_NaN();
+  if (token == "Infinity") return std::numeric_limits<double>::infinity();
+  if (token == "-Infinity") return -std::numeric_limits<double>::infinity();
+  return std::nullopt;
+}
+
 std::string hex(double x) {
   char text[32];  // "%a" of a double: at most "-0x1.fffffffffffffp-1022" (24 characters)
   std::snprintf(text, sizeof text, "%a", x);
@@ -35,7 +49,8 @@ std::string hex(double x) {
 
 std::string decimal_and_hex(double x) {
   std::string text;
-  append(text, x);
+  append_any(text, x);
+  if (!std::isfinite(x)) return text;
   return text + " (" + hex(x) + ")";
 }
 

@@ -14,10 +14,16 @@
 //
 // Writing: the shortest text that reads back as the same double, always with a fraction or an exponent, so
 // -0 keeps its sign ("-0.0") and every reader, strict or not, takes it for a double.
+//
+// Non-finite values: JSON has no syntax for them, but Python's json, JavaScript's JSON5 and many other writers
+// use the tokens NaN, Infinity and -Infinity. A candidate's answer may hold them (cli/protocol.hpp, reading
+// an answer), and messages about an answer write them so (append_any, decimal_and_hex).
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <string_view>
 
 namespace circles::cli::json_number {
 
@@ -29,11 +35,18 @@ double from_integer(std::uint64_t n);
 // std::domain_error for NaN and infinities, which JSON cannot write.
 void append(std::string& out, double x);
 
+// append for a finite x; the token NaN, Infinity or -Infinity otherwise. For messages and for answers, never
+// for a line we send.
+void append_any(std::string& out, double x);
+
+// The value of the token "NaN", "Infinity" or "-Infinity"; nothing for any other text.
+std::optional<double> non_finite_token(std::string_view token);
+
 // x in C's hexadecimal form ("%a"), which names every double exactly: "0x1.999999999999ap-4".
 std::string hex(double x);
 
-// For messages: the shortest decimal that reads back as x and its hexadecimal form, "0.1 (0x1.999999999999ap-4)".
-// Throws std::domain_error for NaN and infinities, like append.
+// For messages: the shortest decimal that reads back as x and its hexadecimal form, "0.1 (0x1.999999999999ap-4)";
+// for a value that is not finite, its token alone: "Infinity".
 std::string decimal_and_hex(double x);
 
 }  // namespace circles::cli::json_number

@@ -149,8 +149,7 @@ int main(int argc, char** argv) {
   conform->add_option("--save", save_dir,
                       "Replay every counterexample stored in DIR first, and store a new one there (with its picture)");
   conform->add_option("--svg", svg_file,
-                      "Draw a counterexample's picture in FILE (default: beside it in --save DIR, else in the "
-                      "temporary directory)");
+                      "Draw a counterexample's picture in FILE (default: beside it in --save DIR, else none)");
   conform->add_option("--timeout", timeout, "Seconds to wait for each answer")
       ->capture_default_str()
       ->check(CLI::Range(0.001, 3600.0));
@@ -215,7 +214,6 @@ int main(int argc, char** argv) {
       if (*case_option) conform_options.only_case = only_case;
       conform_options.save = save_dir;
       conform_options.svg = svg_file;
-      conform_options.picture_in_temp = true;
       try {
         std::unique_ptr<Candidate> candidate;
         if (exec.empty())

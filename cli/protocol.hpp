@@ -39,13 +39,26 @@ struct Line {
   Circles circles;
 };
 
-// Reads one line (without its newline; surrounding JSON whitespace is allowed). Strict: an object with
-// exactly the keys `counter` and "circles", each once, in either order; the counter an integer in
-// [0, 2^64 - 1]; each circle an array of 5 numbers, each read as its nearest double (cli/json_number.hpp),
-// that form a circle of C in the resolved profile (finite, r >= 0). Anything else, including trailing text and
-// any nesting beyond [[...]], throws ProtocolError; the reader stops at the first fault, so no input is too
+// How parse_line reads a line.
+//   strict  requests and traces: an object with exactly the keys `counter` and "circles"; each circle an
+//           element of C in the resolved profile (finite numbers, r >= 0).
+//   answer  a candidate's answer (docs/protocol.md): `counter` and "circles" still exactly once each, but any
+//           other key is ignored, whatever its value (forward compatibility, as JSON-RPC and LSP readers do:
+//           `"ms": 0.1` beside them is no fault). Each field is any double: the tokens NaN, Infinity and
+//           -Infinity are the values they mean, a number beyond the double range is, like every number, its
+//           nearest double (±infinity, round to nearest), and no field is checked against C, so that conform
+//           judges each value against the expected one instead of refusing the line.
+enum class Reading { strict, answer };
+
+// Reads one line (without its newline; surrounding JSON whitespace is allowed): an object with the keys
+// `counter` and "circles", each once, in either order (and, reading an answer, any others); the counter an
+// integer in [0, 2^64 - 1]; each circle an array of 5 numbers, each read as its nearest double
+// (cli/json_number.hpp), that form a circle of C in the resolved profile (finite, r >= 0) when reading
+// strictly. Anything else, including trailing text and, reading strictly, any nesting beyond [[...]], throws
+// ProtocolError; the reader stops at the first fault and keeps its nesting on the heap, so no input is too
 // deep for it.
-Line parse_line(std::string_view text, std::size_t line_number, std::string_view counter = kId);
+Line parse_line(std::string_view text, std::size_t line_number, std::string_view counter = kId,
+                Reading reading = Reading::strict);
 
 // Input bytes as they may appear in a message: printable ASCII as is, any other byte (a control character, a
 // byte of a UTF-8 sequence, valid or not) as \xHH. A message naming what it read is then one line of ASCII,

@@ -67,6 +67,14 @@ draws_the_picture_where_svg_says)
   [ "$(cat "$dir/err")" = "circles conform: --svg: cannot write $dir/no/such/picture.svg: the directory $dir/no/such \
 does not exist" ] || fail "unexpected message: $(cat "$dir/err")"
   ;;
+draws_no_picture_unless_asked)
+  # Without --svg or --save a failing run draws nothing, in the temporary directory or anywhere: CI loops stay clean.
+  mkdir "$dir/tmp"
+  export TMPDIR="$dir/tmp"
+  run_conform 1 --seed 3 --exec "$naive"
+  ! grep -q "^picture:" "$dir/out" || fail "a picture without --svg or --save: $(cat "$dir/out")"
+  [ -z "$(ls -A "$dir/tmp")" ] || fail "files left in the temporary directory: $(ls -A "$dir/tmp")"
+  ;;
 replays_the_committed_corpus_with_each_engine)
   # A copy, so that a failure writes its picture there rather than into the source tree.
   cp -r "$source_dir/tests/corpus/conform" "$dir/corpus"

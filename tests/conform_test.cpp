@@ -604,6 +604,60 @@ TEST(conform, judges_the_answers_before_a_fault_in_a_batch_and_reports_the_count
   EXPECT_GE(candidate.crashes, 1);  // the fault happened, inside a batch
 }
 
+// tests/faulty_candidate.cpp MODE, through the program and conform's defaults at seed 1 (a batch of requests at a
+// time, as `circles conform --exec` asks).
+std::string check_faulty(const std::string& mode, int& status) {
+  ProcessCandidate candidate(std::string(CIRCLES_FAULTY_CANDIDATE) + " " + mode, 10s);
+  ConformOptions options;
+  options.seed = 1;
+  return run(candidate, options, status);
+}
+
+// The counterexample's line naming the field: "  step 1 of 1, circle 0, field px: expected X, got Y".
+std::string difference_line(const std::string& report) {
+  const std::size_t at = report.find("  step ");
+  return at == std::string::npos ? "" : report.substr(at, report.find('\n', at) - at);
+}
+
+// Python's json writes NaN, Infinity and -Infinity for floats that are not finite: each is read as the value it
+// means and judged like any number, a counterexample (exit 1) shrunk to the two circles that make the
+// candidate write it, naming the field, the expected value and the token received.
+TEST(conform, reads_nan_and_infinity_in_an_answer_as_values_and_reports_a_counterexample) {
+  for (const std::string token : {"NaN", "Infinity", "-Infinity"}) {
+    int status = -1;
+    const std::string report = check_faulty(token, status);
+    EXPECT_EQ(status, 1) << token << "\n" << report;
+    EXPECT_TRUE(std::regex_search(report, std::regex("shrunk from [0-9]+ to 2 circles"))) << report;
+    EXPECT_TRUE(std::regex_match(difference_line(report),
+                                 std::regex("  step 1 of 1, circle 0, field px: expected [-0-9.e]+ \\(0x[-0-9a-fp.+]+\\), got " +
+                                            std::regex_replace(token, std::regex("[-+]"), "\\$&"))))
+        << difference_line(report);
+  }
+}
+
+// A program that answers one request wrong and then breaks (a line that is not JSON, or an exit) on the next,
+// inside a batch: the answers to the rest of the batch are still in its pipe when conform reads the fault. The
+// program is started afresh before the next request, so shrinking gets the answers to its own requests, never
+// "answered request 13 with id 6", and the verdict is the shrunk counterexample, exit 1.
+TEST(conform, never_takes_an_answer_for_another_request_after_a_fault_in_a_batch) {
+  for (const std::string mode : {"wrong-then-malformed", "wrong-then-crash"}) {
+    int status = -1;
+    const std::string report = check_faulty(mode, status);
+    EXPECT_EQ(status, 1) << mode << "\n" << report;
+    EXPECT_TRUE(std::regex_search(report, std::regex("shrunk from [0-9]+ to 2 circles in [1-9][0-9]* steps"))) << report;
+    EXPECT_NE(difference_line(report).find(", circle 0, field px: expected "), std::string::npos) << report;
+  }
+}
+
+// Unknown keys in an answer are ignored, whatever their values (NaN and a "}" in a string included), for
+// forward compatibility: an exact candidate that adds a timing to each answer conforms.
+TEST(conform, ignores_unknown_keys_in_an_answer) {
+  int status = -1;
+  const std::string report = check_faulty("extra-key", status);
+  EXPECT_EQ(status, 0) << report;
+  EXPECT_NE(report.find("conforms: 1000 cases"), std::string::npos) << report;
+}
+
 TEST(conform, sends_a_program_several_requests_before_reading_their_answers) {
   const std::vector<Circles> worlds{{}, {{0, 0, 1, 0, 1}}};
   const auto answers = [&](const std::string& second_answer) -> std::string {
