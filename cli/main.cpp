@@ -1,20 +1,22 @@
 // The `circles` program. With no subcommand it runs the main job on the embedded default scene: the oracle's
 // report, then every engine checked against the correctly rounded oracle step by step.
-#include "cli/candidate.hpp"
-#include "cli/check_trace.hpp"
-#include "cli/conform.hpp"
-#include "cli/engines.hpp"
+#include "cli/conform_report.hpp"
 #include "cli/oracle_report.hpp"
+#include "conform/candidate.hpp"
+#include "conform/check_trace.hpp"
+#include "conform/conform.hpp"
+#include "conform/engines.hpp"
 #include "cli/run.hpp"
-#include "cli/scene.hpp"
-#include "cli/serve.hpp"
 #include "cli/vectors.hpp"
+#include "conform/serve.hpp"
+#include "formats/scene.hpp"
 
 #include <CLI/CLI.hpp>
 
 #include <unistd.h>
 
 #include <cmath>
+#include <filesystem>
 #include <cstdint>
 #include <tuple>
 #include <iostream>
@@ -25,6 +27,8 @@
 namespace {
 
 using namespace circles::cli;
+using namespace circles::conform;
+using namespace circles::formats;
 
 // "The engine, one of: double (the double engine ...); oracle (...)", from the registry.
 std::string engine_help() {
@@ -125,7 +129,7 @@ int main(int argc, char** argv) {
   run->add_flag("--stats", stats, "Also print the run's figures: steps, circles, engine, threads, times, ns per circle-step");
 
   std::string exec, level = "exact", shard = "0/1", profile = "resolved", save_dir, svg_file;
-  circles::cli::ConformOptions conform_options;
+  circles::conform::Options conform_options;
   conform_options.seed = std::random_device{}();
   double timeout = 10;
   std::uint64_t only_case = 0;
@@ -193,16 +197,16 @@ int main(int argc, char** argv) {
   try {
     if (*serve) {
       std::ios::sync_with_stdio(false);  // serve reads and writes only through the C++ streams
-      return circles::cli::serve(engine(engine_name), threads, std::cin, std::cout, std::cerr);
+      return circles::conform::serve(engine(engine_name), threads, std::cin, std::cout, std::cerr);
     }
     if (*vectors) return circles::cli::vectors_command(vectors_options, std::cout, std::cerr);
     if (*check_trace)
       return check_trace_command(trace_file, trace_reference(trace_engine), std::cout, std::cerr);
     if (*conform) {
       try {
-        conform_options.level = circles::cli::parse_level(level);
+        conform_options.level = circles::properties::parse_level(level);
         conform_options.profile = circles::properties::parse_profile(profile);
-        std::tie(conform_options.shard, conform_options.shards) = circles::cli::parse_shard(shard);
+        std::tie(conform_options.shard, conform_options.shards) = circles::conform::parse_shard(shard);
       } catch (const std::invalid_argument& e) {
         std::cerr << "circles conform: " << e.what() << "\n";
         return 2;
@@ -213,7 +217,15 @@ int main(int argc, char** argv) {
       }
       if (*case_option) conform_options.only_case = only_case;
       conform_options.save = save_dir;
-      conform_options.svg = svg_file;
+      // A --svg file that cannot be written is a usage error, found before any case runs.
+      if (const std::filesystem::path svg = svg_file; !svg.empty()) {
+        const std::filesystem::path parent = svg.parent_path().empty() ? "." : svg.parent_path();
+        if (!std::filesystem::is_directory(parent)) {
+          std::cerr << "circles conform: --svg: cannot write " << svg.string() << ": the directory " << parent.string()
+                    << " does not exist\n";
+          return 2;
+        }
+      }
       try {
         std::unique_ptr<Candidate> candidate;
         if (exec.empty())
@@ -221,7 +233,8 @@ int main(int argc, char** argv) {
         else
           candidate = std::make_unique<ProcessCandidate>(
               exec, std::chrono::milliseconds(static_cast<long long>(std::ceil(timeout * 1000))));
-        return circles::cli::conform(*candidate, conform_options, std::cout);
+        const Verdict verdict = circles::conform::check(*candidate, conform_options);
+        return print_verdict(verdict, svg_file, std::cout, std::cerr);
       } catch (const BrokenCandidate& e) {
         std::cerr << "circles conform: " << e.what() << "\n";
         return 2;

@@ -1,11 +1,11 @@
 #include "cli/run.hpp"
 
-#include "cli/json_number.hpp"
-#include "cli/progress.hpp"
-#include "cli/protocol.hpp"
-#include "cli/render.hpp"
+#include "formats/json_number.hpp"
+#include "pictures/progress.hpp"
+#include "formats/protocol.hpp"
+#include "pictures/render.hpp"
 #include "cli/vectors.hpp"  // append_exact_world
-#include "cli/video.hpp"
+#include "pictures/video.hpp"
 
 #include <algorithm>
 #include <optional>
@@ -15,14 +15,7 @@
 
 namespace circles::cli {
 
-Circles doubles_of(const std::vector<spec::Circle>& scene) {
-  Circles w;
-  w.reserve(scene.size());
-  for (const spec::Circle& c : scene) w.push_back(spec::nearest_doubles(c));
-  return w;
-}
-
-Circles doubles_of(const Scene& scene) { return doubles_of(scene.circles); }
+using namespace circles::pictures;
 
 using Clock = std::chrono::steady_clock;
 

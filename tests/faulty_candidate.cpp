@@ -9,7 +9,7 @@
 //   wrong-then-crash           circle 0's px one ulp up, and then exit 3 on the next request.
 //   extra-key                  no mistake, but every answer carries a key "ms" beside "id" and "circles".
 // Exits 2 for another MODE.
-#include "cli/protocol.hpp"
+#include "formats/protocol.hpp"
 #include "tests/gallery.hpp"
 
 #include <cmath>
@@ -17,7 +17,7 @@
 #include <string>
 
 int main(int argc, char** argv) {
-  using namespace circles::cli;
+  using namespace circles::formats;
   const std::string mode = argc == 2 ? argv[1] : "";
   const bool token = mode == "NaN" || mode == "Infinity" || mode == "-Infinity";
   if (!token && mode != "wrong-then-malformed" && mode != "wrong-then-crash" && mode != "extra-key") {

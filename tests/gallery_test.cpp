@@ -2,9 +2,9 @@
 // default budget (1000 cases, one step, level exact, resolved profile) must reject, checked in process, and the
 // committed corpus of their counterexamples. (Through the program over the step protocol: the gallery_program
 // ctests, tests/CMakeLists.txt.)
-#include "cli/candidate.hpp"
-#include "cli/conform.hpp"
-#include "cli/corpus.hpp"
+#include "conform/candidate.hpp"
+#include "conform/conform.hpp"
+#include "conform/corpus.hpp"
 #include "tests/gallery.hpp"
 
 #include <gtest/gtest.h>
@@ -21,7 +21,9 @@
 #include <string>
 #include <variant>
 
-namespace circles::cli {
+namespace circles::conform {
+
+using namespace circles::formats;
 namespace {
 
 using testing::find_entry;
@@ -41,21 +43,18 @@ class Gallery : public Candidate {
   const GalleryEntry& entry_;
 };
 
-// conform's verdict with its default budget, and the report; counterexamples are saved in `save` if given.
-int verdict(const GalleryEntry& entry, std::string& report, const std::filesystem::path& save = {}) {
+// conform's verdict with its default budget; counterexamples are saved in `save` if given.
+Verdict verdict(const GalleryEntry& entry, const std::filesystem::path& save = {}) {
   Gallery candidate(entry);
-  std::ostringstream out;
-  ConformOptions options;  // the defaults: 1000 cases, one step, level exact, resolved profile
+  Options options;  // the defaults: 1000 cases, one step, level exact, resolved profile
   options.seed = 1;
   options.save = save;
-  const int status = conform(candidate, options, out);
-  report = out.str();
-  return status;
+  return check(candidate, options);
 }
 
 TEST(gallery, the_step_with_no_mistake_conforms) {
-  std::string report;
-  EXPECT_EQ(verdict(*find_entry("none"), report), 0) << report;
+  const Verdict v = verdict(*find_entry("none"));
+  EXPECT_EQ(v.outcome, Outcome::conforms) << v.error;
 }
 
 // The gallery_program ctests (tests/CMakeLists.txt) run `circles conform` on gallery_candidate NAME for each
@@ -86,16 +85,12 @@ TEST(gallery, every_wrong_implementation_is_rejected_by_the_default_budget) {
            : std::filesystem::temp_directory_path() / ("circles-gallery-" + std::to_string(::getpid()));
   for (std::size_t entry = 0; entry < gallery().size(); ++entry) {
     const std::string& mistake = gallery()[entry].description;
-    std::string report;
     // A directory of its own: a corpus shared with the entries before would catch most mistakes by replay.
-    EXPECT_EQ(verdict(gallery()[entry], report, save / std::to_string(entry)), 1)
-        << mistake << " was not caught:\n" << report;
-    const auto which = report.find("which decision");
-    std::printf("[ gallery ] %-55s %s", mistake.c_str(),
-                which == std::string::npos ? "\n" : report.substr(which, report.find('\n', which) - which + 1).c_str());
-    const auto saved = report.find("saved: ");
-    ASSERT_NE(saved, std::string::npos) << report;
-    const std::string file = report.substr(saved + 7, report.find('\n', saved) - saved - 7);
+    const Verdict v = verdict(gallery()[entry], save / std::to_string(entry));
+    ASSERT_EQ(v.outcome, Outcome::does_not_conform) << mistake << " was not caught: " << v.error;
+    std::printf("[ gallery ] %-55s which decision: %s\n", mistake.c_str(), v.counterexample->difference.decision.c_str());
+    const std::string file = v.counterexample->saved.string();
+    ASSERT_FALSE(file.empty()) << v.counterexample->not_saved;
     std::ifstream in(file);
     std::stringstream text;
     text << in.rdbuf();
@@ -129,4 +124,4 @@ TEST(gallery, each_committed_counterexample_still_catches_the_mistake_that_made_
 }
 
 }  // namespace
-}  // namespace circles::cli
+}  // namespace circles::conform

@@ -1,8 +1,8 @@
-// The step protocol's lines (cli/protocol.hpp): every double written reads back as itself, bit for bit, in
+// The step protocol's lines (formats/protocol.hpp): every double written reads back as itself, bit for bit, in
 // our reader and in a lenient one; every malformed line is refused with the message that names its fault.
-#include "cli/protocol.hpp"
+#include "formats/protocol.hpp"
 
-#include "cli/json_number.hpp"
+#include "formats/json_number.hpp"
 #include "properties/generators.hpp"
 #include "tests/thrown.hpp"
 
@@ -18,7 +18,7 @@
 #include <limits>
 #include <string>
 
-namespace circles::cli {
+namespace circles::formats {
 namespace {
 
 using circles::testing::thrown;
@@ -273,4 +273,4 @@ TEST(protocol, rejects_malformed_json_trailing_text_and_an_empty_line) {
 }
 
 }  // namespace
-}  // namespace circles::cli
+}  // namespace circles::formats

@@ -1,0 +1,133 @@
+#include "conform/check_trace.hpp"
+
+#include "conform/engines.hpp"
+#include "formats/json_number.hpp"
+#include "impl/engine.hpp"
+#include "impl/state_hash.hpp"
+
+#include <memory>
+#include <new>
+#include <stdexcept>
+#include <utility>
+
+namespace circles::conform {
+
+namespace json_number = formats::json_number;
+using formats::hash_text;
+namespace {
+
+// The world the reference expects after `input`, or where its step overflows.
+class Reference {
+ public:
+  Reference(TraceReference kind, const Circles& first) : kind_(kind) {
+    if (kind_ == TraceReference::exact) exact_ = reference(engine("exact"), first);
+  }
+
+  // The expected world after `input` (the trace's world on the line before): nothing, with `overflow` set,
+  // when the reference's step leaves the double range.
+  std::optional<Circles> next(const Circles& input, std::string& overflow) {
+    if (kind_ == TraceReference::rounded) {
+      try {
+        return impl::step_all_pairs(impl::World{input}).circles();
+      } catch (const impl::PositionOverflow& e) {
+        overflow = overflow_reason(e.index, std::string_view(e.field) == "px" ? spec::Field::px : spec::Field::py);
+        return std::nullopt;
+      }
+    }
+    try {
+      exact_->step();  // the exact sequence from the first world, whatever the trace held since
+    } catch (const StepOverflow& e) {
+      overflow = overflow_reason(e.index, e.field);
+      return std::nullopt;
+    }
+    return exact_->circles();
+  }
+
+ private:
+  TraceReference kind_;
+  std::unique_ptr<Stepper> exact_;
+};
+
+}  // namespace
+
+TraceReference trace_reference(std::string_view engine) {
+  if (engine == "double") return TraceReference::rounded;
+  if (engine == "exact") return TraceReference::exact;
+  throw std::invalid_argument("--engine: \"" + std::string(engine) + "\" is not double or exact");
+}
+
+TraceCheck check_trace(TraceReader& reader, TraceReference kind) {
+  TraceCheck check;
+  std::optional<Line> previous = reader.next();  // throws for an empty file
+  std::size_t previous_line = reader.line();
+  const std::size_t first_line = previous_line;
+  check.first_step = check.last_step = previous->number;
+  check.circles = previous->circles.size();
+  Reference reference(kind, previous->circles);
+  impl::StateHash trajectory;
+  trajectory.add(previous->circles);
+  while (std::optional<Line> now = reader.next()) {
+    std::string overflow;
+    const std::optional<Circles> expected = reference.next(previous->circles, overflow);
+    std::optional<Difference> difference;
+    if (expected) difference = compare(previous->circles, *expected, now->circles, Level{0});
+    if (!expected || difference) {
+      check.divergence = TraceDivergence{reader.line(), now->number,
+                                         kind == TraceReference::exact ? first_line : previous_line, difference,
+                                         overflow};
+      break;
+    }
+    trajectory.add(now->circles);
+    check.last_step = now->number;
+    previous = std::move(now);
+    previous_line = reader.line();
+  }
+  check.last_hash = impl::state_hash(previous->circles);
+  check.trajectory_hash = trajectory.value();
+  return check;
+}
+
+void print_check(const TraceCheck& check, const std::string& source, TraceReference kind, std::ostream& out) {
+  const bool exact = kind == TraceReference::exact;
+  const std::string range = "steps " + std::to_string(check.first_step) + " to " + std::to_string(check.last_step) +
+                            ", " + std::to_string(check.circles) + " circles";
+  if (!check.divergence) {
+    out << "circles check-trace: " << source << ": agrees with "
+        << (exact ? "the oracle's exact sequence, rounded," : "the correctly rounded step") << " at each of its "
+        << check.steps() << " steps (" << range << "); state hash of step " << check.last_step << ": "
+        << hash_text(check.last_hash) << ", trajectory hash: " << hash_text(check.trajectory_hash) << "\n";
+    return;
+  }
+  const TraceDivergence& d = *check.divergence;
+  out << "circles check-trace: " << source << ":" << d.line << ": step " << d.step << " differs from "
+      << (exact ? "the oracle's exact sequence from line " : "the correctly rounded step of line ") << d.input_line
+      << (exact ? ", rounded" : "") << ": ";
+  if (d.difference) {
+    const Difference& f = *d.difference;
+    out << "circle " << f.circle << ", field " << spec::name(spec::Field(f.field)) << ": expected "
+        << json_number::decimal_and_hex(f.expected) << ", actual " << json_number::decimal_and_hex(f.actual) << "\n";
+    // The decision is judged on the world of the line before, which is the reference's input only for double.
+    if (!exact) out << "  which decision: " << f.decision << "\n";
+  } else {
+    out << "the step overflows (" << d.overflow << "), so no world can follow, yet the trace holds one\n";
+  }
+  out << "  the worlds before it agree (" << range << "; trajectory hash " << hash_text(check.trajectory_hash)
+      << ")\n";
+}
+
+int check_trace_command(const std::string& path, TraceReference kind, std::ostream& out, std::ostream& err) {
+  try {
+    TraceReader reader(path);
+    const TraceCheck check = check_trace(reader, kind);
+    print_check(check, path, kind, out);
+    return check.divergence ? 1 : 0;
+  } catch (const TraceReadError& e) {
+    err << "circles check-trace: " << e.what() << "\n";
+    return 2;
+  } catch (const std::bad_alloc&) {  // the reader's two worlds fit, the reference's step on them did not
+    err << "circles check-trace: " << path << ": the worlds are too large to check in memory\n";
+    return 2;
+  }
+}
+
+}  // namespace circles::conform
