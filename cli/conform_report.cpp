@@ -5,6 +5,7 @@
 #include "pictures/counterexample_svg.hpp"
 
 #include <span>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -45,10 +46,11 @@ std::string found(const Verdict& v, const Counterexample& c) {
          std::to_string(c.shrink_path.back().size()) + " circles in " + std::to_string(c.shrinks()) + " steps";
 }
 
-void print_counterexample(const Verdict& v, const std::filesystem::path& svg, std::ostream& out) {
+// The lines that open the report of a counterexample, and its picture's legend.
+std::vector<std::string> head_lines(const Verdict& v) {
   const Counterexample& c = *v.counterexample;
   const properties::Difference& d = c.difference;
-  const std::vector<std::string> head{
+  return {
       "circles conform: " + v.candidate + " does not conform (level " + v.options.level.text() + ", " +
           properties::name(v.options.profile) + " profile)",
       "counterexample: " + found(v, c),
@@ -57,19 +59,30 @@ void print_counterexample(const Verdict& v, const std::filesystem::path& svg, st
           ", got " + json_number::decimal_and_hex(d.actual),
       "  which decision: " + d.decision,
   };
-  for (const std::string& line : head) out << line << "\n";
+}
+
+// The head lines and the three worlds.
+void print_worlds(const Verdict& v, std::ostream& out) {
+  const Counterexample& c = *v.counterexample;
+  for (const std::string& line : head_lines(v)) out << line << "\n";
   print_world(out, c.step == 1 ? "the world asked (w_0)" : "the world asked (the candidate's own last answer)", c.input);
   print_world(out,
               v.options.profile == Profile::literal ? "expected (the literal oracle's step, rounded to nearest)"
                                                     : "expected (the correctly rounded oracle step)",
               c.expected);
   print_world(out, "answered", c.actual);
+}
+
+void print_counterexample(const Verdict& v, const std::filesystem::path& svg, std::ostream& out) {
+  const Counterexample& c = *v.counterexample;
+  const properties::Difference& d = c.difference;
+  print_worlds(v, out);
   if (!c.saved.empty()) out << "saved: " << c.saved.string() << "\n";
   if (!c.not_saved.empty()) out << "saved: not saved: " << c.not_saved << "\n";
   if (const std::filesystem::path file = picture_path(v, svg); !file.empty()) {
     try {
       conform::write_atomically(file, pictures::counterexample_svg({c.input, c.expected, c.actual, d.circle,
-                                                                    v.options.profile, head}));
+                                                                    v.options.profile, head_lines(v)}));
       out << "picture: " << file.string() << "\n";
     } catch (const std::exception& e) {
       out << "picture: not drawn: " << e.what() << "\n";
@@ -124,6 +137,14 @@ void print_conforms(const Verdict& v, std::ostream& out) {
 }
 
 }  // namespace
+
+std::string counterexample_text(const Verdict& verdict) {
+  if (!verdict.counterexample) return "";
+  std::ostringstream out;
+  print_worlds(verdict, out);
+  out << "replay: " << verdict.counterexample->replay << "\n";
+  return out.str();
+}
 
 std::filesystem::path picture_path(const Verdict& verdict, const std::filesystem::path& svg) {
   if (!svg.empty()) return svg;

@@ -2,6 +2,7 @@
 // report, then every engine checked against the correctly rounded oracle step by step.
 #include "cli/conform_report.hpp"
 #include "cli/oracle_report.hpp"
+#include "cli/report.hpp"
 #include "conform/candidate.hpp"
 #include "conform/check_trace.hpp"
 #include "conform/conform.hpp"
@@ -158,6 +159,18 @@ int main(int argc, char** argv) {
       ->capture_default_str()
       ->check(CLI::Range(0.001, 3600.0));
   CLI::Option* case_option = conform->add_option("--case", only_case, "Check only this case (to replay a counterexample)");
+  std::string report_file, junit_file;
+  conform->add_option("--report", report_file, "Also write the verdict as JSON to FILE (docs/conform.md, Reports for CI)");
+  conform->add_option("--junit", junit_file, "Also write the verdict as JUnit XML to FILE, a test case per family");
+
+  CLI::App* report = app.add_subcommand("report", "Work with the JSON reports of circles conform --report");
+  report->require_subcommand(1, 1);
+  std::string merged_file;
+  std::vector<std::string> shard_files;
+  CLI::App* merge = report->add_subcommand(
+      "merge", "Combine the reports of the shards of one run into OUT; exits 0, 1 or 2 as the merged verdict");
+  merge->add_option("out", merged_file, "The merged report (written whole or not at all)")->required();
+  merge->add_option("reports", shard_files, "The shards' reports")->required()->check(CLI::ExistingFile);
 
   circles::cli::VectorsOptions vectors_options;
   CLI::App* vectors = app.add_subcommand(
@@ -200,6 +213,7 @@ int main(int argc, char** argv) {
       return circles::conform::serve(engine(engine_name), threads, std::cin, std::cout, std::cerr);
     }
     if (*vectors) return circles::cli::vectors_command(vectors_options, std::cout, std::cerr);
+    if (*merge) return circles::cli::merge_command(merged_file, shard_files, std::cerr);
     if (*check_trace)
       return check_trace_command(trace_file, trace_reference(trace_engine), std::cout, std::cerr);
     if (*conform) {
@@ -234,7 +248,17 @@ int main(int argc, char** argv) {
           candidate = std::make_unique<ProcessCandidate>(
               exec, std::chrono::milliseconds(static_cast<long long>(std::ceil(timeout * 1000))));
         const Verdict verdict = circles::conform::check(*candidate, conform_options);
-        return print_verdict(verdict, svg_file, std::cout, std::cerr);
+        const int status = print_verdict(verdict, svg_file, std::cout, std::cerr);
+        // The reports for CI, for every verdict; a report that cannot be written makes the run's status 2.
+        const std::string text = counterexample_text(verdict);
+        try {
+          if (!report_file.empty()) write_report(report_file, "--report", json_report(verdict, text));
+          if (!junit_file.empty()) write_report(junit_file, "--junit", junit_report(verdict, text));
+        } catch (const OutputError& e) {
+          std::cerr << "circles conform: " << e.what() << "\n";
+          return 2;
+        }
+        return status;
       } catch (const BrokenCandidate& e) {
         std::cerr << "circles conform: " << e.what() << "\n";
         return 2;

@@ -27,16 +27,8 @@ constexpr std::string_view kKeys[] = {"format", "profile", "world",  "level",   
 constexpr std::string_view kDifferenceKeys[] = {"circle", "field", "expected", "actual", "decision"};
 
 
-// A number of an answer, which may be NaN or infinite (formats/protocol.hpp, Reading::answer): JSON has no syntax
-// for those, so they are stored as the strings "NaN", "Infinity" and "-Infinity".
-void append_answered(std::string& out, double x) {
-  if (std::isfinite(x)) return json_number::append(out, x);
-  out += '"';
-  json_number::append_any(out, x);
-  out += '"';
-}
-
-// The world asked and the expected answer are worlds of C; what the candidate answered is any numbers.
+// The world asked and the expected answer are worlds of C; what the candidate answered is any numbers, those
+// that are not finite stored as the strings "NaN", "Infinity" and "-Infinity" (json_number::append_or_string).
 enum class Numbers { of_c, answered };
 
 void append_world(std::string& out, const Circles& w, Numbers numbers = Numbers::of_c) {
@@ -45,7 +37,7 @@ void append_world(std::string& out, const Circles& w, Numbers numbers = Numbers:
     out += k ? ",\n    [" : "\n    [";
     for (std::size_t f = 0; f < 5; ++f) {
       if (f) out += ", ";
-      if (numbers == Numbers::answered) append_answered(out, w[k][f]);
+      if (numbers == Numbers::answered) json_number::append_or_string(out, w[k][f]);
       else json_number::append(out, w[k][f]);
     }
     out += "]";
@@ -122,7 +114,7 @@ std::string to_json(const StoredCounterexample& c) {
   };
   const auto answered = [](double x) {
     std::string text;
-    append_answered(text, x);
+    json_number::append_or_string(text, x);
     return text;
   };
   std::string out = "{\n  \"format\": " + string(std::string(kFormat)) + ",\n";

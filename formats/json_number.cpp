@@ -34,6 +34,13 @@ void append_any(std::string& out, double x) {
   else append(out, x);
 }
 
+void append_or_string(std::string& out, double x) {
+  if (std::isfinite(x)) return append(out, x);
+  out += '"';
+  append_any(out, x);
+  out += '"';
+}
+
 std::optional<double> non_finite_token(std::string_view token) {
   if (token == "NaN") return std::numeric_limits<double>::quiet_NaN();
   if (token == "Infinity") return std::numeric_limits<double>::infinity();

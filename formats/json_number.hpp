@@ -39,6 +39,10 @@ void append(std::string& out, double x);
 // for a line we send.
 void append_any(std::string& out, double x);
 
+// For a JSON document that records an answer (a corpus file, a report): append for a finite x; else its token
+// as a JSON string, "NaN", "Infinity" or "-Infinity", which JSON can hold and non_finite_token reads back.
+void append_or_string(std::string& out, double x);
+
 // The value of the token "NaN", "Infinity" or "-Infinity"; nothing for any other text.
 std::optional<double> non_finite_token(std::string_view token);
 

@@ -32,6 +32,7 @@
 #include "impl/rounding.hpp"
 #include "properties/boundaries.hpp"
 #include "spec/oracle.hpp"
+#include "tests/function_candidate.hpp"
 #include "tests/temp_dir.hpp"
 #include "tests/thrown.hpp"
 
@@ -44,16 +45,7 @@ using circles::testing::TempDir;
 using circles::testing::thrown;
 using namespace std::chrono_literals;
 
-// An in-process candidate from a step function, for deliberately wrong implementations.
-class FunctionCandidate : public Candidate {
- public:
-  explicit FunctionCandidate(std::function<Circles(const Circles&)> step) : step_(std::move(step)) {}
-  Circles answer(const Circles& world, std::uint64_t) override { return step_(world); }
-  std::string name() const override { return "the function"; }
-
- private:
-  std::function<Circles(const Circles&)> step_;
-};
+using circles::testing::FunctionCandidate;
 
 // The resolved step with the contacts `touches(k, j)` decides: each circle takes the velocity of the least.
 Circles step_with_contacts(const Circles& w, const std::function<bool(std::size_t, std::size_t)>& touches) {
