@@ -8,6 +8,10 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <string_view>
+#include <tuple>
 #include <span>
 #include <variant>
 #include <vector>
@@ -19,6 +23,47 @@ using properties::NoAnswer;
 
 // Shrinking asks the candidate at most this many worlds: enough for worlds of 8 circles, bounded for a slow one.
 constexpr int kMaxShrinkQueries = 2000;
+// Simplifying the numbers of the shrunk world asks at most this many more: 8 circles × 5 fields × the up to 71
+// values of simpler_values is 2840, but a field stops at its first simpler value that still fails, most at 0 or
+// an integer, and a number that is already simple has few simpler values.
+constexpr int kMaxSimplifyQueries = 1000;
+
+// How simple a number reads, smaller first: zero; then integers before fractions; then fewer significant
+// decimal digits (those of the shortest decimal that reads back as it: 0.5 has 1, 0.0625 3); then fewer bits
+// in its significand (the shorter binary fraction); then the smaller magnitude.
+std::tuple<bool, bool, int, int, double> simplicity(double x) {
+  char text[32];
+  const auto end = std::to_chars(text, text + sizeof text, x, std::chars_format::scientific).ptr;
+  const std::string_view s(text, static_cast<std::size_t>(end - text));
+  const int digits = static_cast<int>(std::count_if(s.begin(), s.begin() + static_cast<std::ptrdiff_t>(s.find('e')),
+                                                    [](char c) { return c >= '0' && c <= '9'; }));
+  int e = 0;
+  const double m = std::frexp(std::fabs(x), &e);  // |x| = m · 2^e, 1/2 <= m < 1
+  int bits = 0;
+  for (double rest = m; rest != 0; rest = rest * 2 - std::trunc(rest * 2)) ++bits;
+  return {x != 0, std::trunc(x) != x, digits, bits, std::fabs(x)};
+}
+
+// Values simpler than x (by simplicity), simplest first, as Hypothesis shrinks a number: toward 0, toward the
+// integers (toward zero and nearest), toward short binary fractions (x's significand cut to 1, 2, …, 52 bits
+// toward zero) and short decimals (x rounded to 1, 2, …, 16 significant digits). Each is a finite double.
+std::vector<double> simpler_values(double x) {
+  std::vector<double> out{0.0, std::trunc(x), std::nearbyint(x)};
+  int e = 0;
+  std::frexp(x, &e);
+  for (int bits = 1; bits < 53; ++bits) out.push_back(std::ldexp(std::trunc(std::ldexp(x, bits - e)), e - bits));
+  for (int digits = 1; digits <= 16; ++digits) {
+    char text[40];
+    const auto end = std::to_chars(text, text + sizeof text - 1, x, std::chars_format::scientific, digits - 1).ptr;
+    *end = '\0';
+    out.push_back(std::strtod(text, nullptr));
+  }
+  const auto key = simplicity(x);
+  std::erase_if(out, [&](double y) { return !std::isfinite(y) || !(simplicity(y) < key); });
+  std::sort(out.begin(), out.end(), [](double a, double b) { return simplicity(a) < simplicity(b); });
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
 
 // A failure of one case: the step of the chain (1-based) of how many, its input, the two answers and what
 // differs.
@@ -326,6 +371,7 @@ class Run {
         }
       }
     }
+    if (options_.simplify) simplify(world.value(), steps, failure, counterexample);
     FamilyResult& result = verdict_.families[family];
     result.status = FamilyStatus::failed;
     result.has_counterexample = true;
@@ -343,6 +389,38 @@ class Run {
       }
     }
     fail(std::move(failure), std::move(counterexample));
+  }
+
+  // After shrinking: each number of the world, in turn, replaced by its simplest value (simpler_values) with
+  // which the case still fails, pass after pass until no number changes or the budget is spent. A world on
+  // which the candidate breaks is passed over, as in shrinking.
+  void simplify(Circles world, std::uint64_t steps, Failure& failure, Counterexample& counterexample) {
+    int queries = 0;
+    for (bool progress = true; progress && queries < kMaxSimplifyQueries;) {
+      progress = false;
+      for (std::size_t k = 0; k < world.size(); ++k)
+        for (std::size_t f = 0; f < 5; ++f)
+          for (const double y : simpler_values(world[k][f])) {
+            if (++queries > kMaxSimplifyQueries) return;
+            Circles simpler = world;
+            simpler[k][f] = y;
+            Ending e = Ending::checked;
+            std::optional<Failure> still;
+            try {
+              still = checker_.run(simpler, steps, e);
+            } catch (const BrokenCandidate&) {
+              continue;
+            }
+            // The same failure, made simpler: at the same step, in the same field (a stateful candidate may
+            // fail otherwise on a world that happens to equal one of its earlier answers).
+            if (!still || still->step != failure.step || still->difference.field != failure.difference.field) continue;
+            world = std::move(simpler);
+            failure = std::move(*still);
+            counterexample.shrink_path.push_back(world);
+            progress = true;
+            break;
+          }
+    }
   }
 
   // 3. Every family must have been checked: a family with no case is a gap in the check, not a pass.

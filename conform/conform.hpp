@@ -51,6 +51,9 @@ struct Options {
   // The corpus: every *.json file here is replayed first, and a new counterexample is saved here. Empty:
   // none. Created if missing.
   std::filesystem::path save{};
+  // After shrinking, simplify each number of the counterexample while it still fails: toward 0, integers and
+  // short binary fractions (docs/conform.md, "Counterexamples a person can read"). Off only to measure it.
+  bool simplify = true;
 };
 
 // "i/n" → shard i of n (0 ≤ i < n). Throws std::invalid_argument with a message for --shard.
@@ -83,7 +86,8 @@ struct Counterexample {
   std::uint64_t step = 1, steps = 1;           // the failing step of the chain (1-based) and the chain's length
   Circles input, expected, actual;             // the world asked at that step, and the two answers
   Difference difference;
-  // Shrinking: the world drawn, then each simpler w_0 that still failed, in order (the last the one reported).
+  // Shrinking: the world drawn, then each simpler w_0 that still failed, in order (the last the one reported):
+  // first fewer circles (RapidCheck's shrinks), then numbers simplified one at a time.
   std::vector<Circles> shrink_path;
   std::size_t circles_before = 0;              // circles of the world drawn
   std::string replay;                          // "--seed 3 --case 3 --level exact": the options that replay it

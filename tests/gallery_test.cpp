@@ -12,14 +12,18 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <charconv>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <numeric>
 #include <regex>
 #include <set>
 #include <sstream>
 #include <string>
 #include <variant>
+#include <vector>
 
 namespace circles::conform {
 
@@ -102,6 +106,62 @@ TEST(gallery, every_wrong_implementation_is_rejected_by_the_default_budget) {
         << file;
   }
   if (!keep) std::filesystem::remove_all(save);
+}
+
+// Significant digits of x: those of the shortest decimal that reads back as x, in scientific form ("6.5e-02"
+// has 2, 0 and 60 have 1).
+int significant_digits(double x) {
+  char text[32];
+  const auto end = std::to_chars(text, text + sizeof text, x, std::chars_format::scientific).ptr;
+  const std::string_view s(text, static_cast<std::size_t>(end - text));
+  return static_cast<int>(std::count_if(s.begin(), s.begin() + static_cast<std::ptrdiff_t>(s.find('e')),
+                                        [](char c) { return c >= '0' && c <= '9'; }));
+}
+
+double median(std::vector<int> xs) {
+  std::sort(xs.begin(), xs.end());
+  const std::size_t n = xs.size();
+  return n % 2 ? xs[n / 2] : (xs[n / 2 - 1] + xs[n / 2]) / 2.0;
+}
+
+// Counterexamples a person can read: after shrinking, each number is simplified while the case still fails. Over
+// the gallery and seeds 1 … 5, no counterexample's world has more significant digits than before, and all of
+// them fewer (docs/conform.md reports the median and mean per number, printed here); every simplified world
+// still catches its mistake and only it.
+TEST(gallery, simplified_counterexamples_have_fewer_significant_digits_and_still_fail) {
+  std::vector<int> before, after;
+  for (const GalleryEntry& entry : gallery())
+    for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+      int digits[2] = {0, 0};
+      for (const bool simplify : {false, true}) {
+        Gallery candidate(entry);
+        Options options;
+        options.seed = seed;
+        options.simplify = simplify;
+        const Verdict v = check(candidate, options);
+        ASSERT_EQ(v.outcome, Outcome::does_not_conform) << entry.name << " seed " << seed;
+        const Circles& w = v.counterexample->shrink_path.back();
+        for (const auto& c : w)
+          for (const double x : c) {
+            (simplify ? after : before).push_back(significant_digits(x));
+            digits[simplify] += significant_digits(x);
+          }
+        const auto expected = properties::expected_step(w, Profile::resolved);
+        ASSERT_TRUE(std::holds_alternative<Circles>(expected));
+        if (v.counterexample->steps == 1) {
+          EXPECT_TRUE(compare(w, std::get<Circles>(expected), mistaken_step(w, entry.mistakes), Level{0})) << entry.name;
+          EXPECT_FALSE(compare(w, std::get<Circles>(expected), mistaken_step(w, Mistakes{}), Level{0})) << entry.name;
+        }
+      }
+      EXPECT_LE(digits[1], digits[0]) << entry.name << " seed " << seed;
+    }
+  const auto mean = [](const std::vector<int>& xs) {
+    return std::accumulate(xs.begin(), xs.end(), 0.0) / static_cast<double>(xs.size());
+  };
+  std::printf("[ gallery ] significant digits per number of the counterexamples: median %.1f before, %.1f after "
+              "simplifying; mean %.2f before, %.2f after (%zu numbers before, %zu after)\n",
+              median(before), median(after), mean(before), mean(after), before.size(), after.size());
+  EXPECT_LT(std::accumulate(after.begin(), after.end(), 0), std::accumulate(before.begin(), before.end(), 0));
 }
 
 // The committed corpus (tests/corpus/conform), which CI also replays with `circles conform --save` against our
