@@ -4,7 +4,9 @@
 #include "formats/json_number.hpp"
 #include "impl/engine.hpp"
 #include "impl/state_hash.hpp"
+#include "properties/chain.hpp"
 
+#include <limits>
 #include <memory>
 #include <new>
 #include <stdexcept>
@@ -58,31 +60,34 @@ TraceReference trace_reference(std::string_view engine) {
 
 TraceCheck check_trace(TraceReader& reader, TraceReference kind) {
   TraceCheck check;
-  std::optional<Line> previous = reader.next();  // throws for an empty file
+  const std::optional<Line> first = reader.next();  // throws for an empty file
   std::size_t previous_line = reader.line();
   const std::size_t first_line = previous_line;
-  check.first_step = check.last_step = previous->number;
-  check.circles = previous->circles.size();
-  Reference reference(kind, previous->circles);
+  check.first_step = check.last_step = first->number;
+  check.circles = first->circles.size();
+  Reference reference(kind, first->circles);
   impl::StateHash trajectory;
-  trajectory.add(previous->circles);
+  trajectory.add(first->circles);
+  // The trace's worlds as a chain's answers (properties/chain.hpp), each against the reference's step of the
+  // world before it (rounded) or the oracle's own sequence (exact); the reader holds every line to the first's
+  // number of circles.
+  properties::Chain chain(first->circles, std::numeric_limits<std::uint64_t>::max());
   while (std::optional<Line> now = reader.next()) {
     std::string overflow;
-    const std::optional<Circles> expected = reference.next(previous->circles, overflow);
-    std::optional<Difference> difference;
-    if (expected) difference = compare(previous->circles, *expected, now->circles, Level{0});
-    if (!expected || difference) {
+    std::optional<Circles> expected = reference.next(chain.input(), overflow);
+    if (!expected || !chain.judge(std::move(now->circles), std::move(*expected))) {
+      std::optional<Difference> difference;
+      if (expected) difference = chain.failure()->difference;
       check.divergence = TraceDivergence{reader.line(), now->number,
                                          kind == TraceReference::exact ? first_line : previous_line, difference,
                                          overflow};
       break;
     }
-    trajectory.add(now->circles);
+    trajectory.add(chain.input());
     check.last_step = now->number;
-    previous = std::move(now);
     previous_line = reader.line();
   }
-  check.last_hash = impl::state_hash(previous->circles);
+  check.last_hash = impl::state_hash(chain.failure() ? chain.failure()->input : chain.input());
   check.trajectory_hash = trajectory.value();
   return check;
 }

@@ -3,6 +3,7 @@
 #include "conform/corpus.hpp"
 #include "formats/json_number.hpp"
 #include "properties/boundaries.hpp"
+#include "properties/chain.hpp"
 
 #include <rapidcheck.h>
 
@@ -65,27 +66,12 @@ std::vector<double> simpler_values(double x) {
   return out;
 }
 
-// A failure of one case: the step of the chain (1-based) of how many, its input, the two answers and what
-// differs.
-struct Failure {
-  std::uint64_t step, steps;
-  Circles input, expected, actual;
-  Difference difference;
-};
-
-// How a chain that did not fail ended: every step checked; no step checked, because w_0 has no expected answer
-// (its next world leaves the double range, or, replayed in the literal profile, it is outside the domain);
-// or checked up to a world with no expected answer.
-enum class Ending { checked, skipped, cut_short };
-
-// One case's chain of steps, as Checker::run_all runs it.
-struct Chain {
-  Chain(Circles w_0, std::uint64_t steps_to_chain) : now(std::move(w_0)), steps(steps_to_chain) {}
-  Circles now;                    // the world to ask next: w_0, then the candidate's last answer
-  std::uint64_t steps, step = 0;  // the steps to chain, and the steps asked so far
-  Ending ending = Ending::checked;
-  std::optional<Failure> failure;
-};
+// One case's chain of steps (properties/chain.hpp), its failure, and how it ended: every step checked; no step
+// checked, because w_0 has no expected answer (its next world leaves the double range, or, replayed in the
+// literal profile, it is outside the domain): skipped; or checked up to a world with no expected answer.
+using properties::Chain;
+using Failure = properties::ChainFailure;
+using Ending = Chain::Ending;
 
 // The most cases conform asks the candidate about in one Checker::run_all, which sends every request whose
 // world is known before reading their answers (ProcessCandidate also bounds the bytes in flight), so that they
@@ -101,10 +87,10 @@ class Checker {
 
   // Chains `steps` steps from w.
   std::optional<Failure> run(const Circles& w, std::uint64_t steps, Ending& ending) {
-    Chain chain(w, steps);
+    Chain chain(w, steps, options_.level);
     run_all(std::span(&chain, 1));
-    ending = chain.ending;
-    return std::move(chain.failure);
+    ending = chain.ending();
+    return std::move(chain.failure());
   }
 
   // Runs the chains as run() would run them one after another, up to the first that fails: returns its index
@@ -124,16 +110,16 @@ class Checker {
       std::size_t next = chains.size();  // where the next batch starts: the chain that goes on, if any
       for (std::size_t k = first; k < chains.size(); ++k) {
         Chain& chain = chains[k];
-        if (chain.step >= chain.steps) continue;
-        auto reference = properties::expected_step(chain.now, options_.profile);
+        if (!chain.going()) continue;
+        auto reference = properties::expected_step(chain.input(), options_.profile);
         if (!std::holds_alternative<Circles>(reference)) {
-          chain.ending = chain.step == 0 ? Ending::skipped : Ending::cut_short;
+          chain.end();
           continue;
         }
-        asked.push_back(chain.now);
+        asked.push_back(chain.input());
         expected.push_back(std::move(std::get<Circles>(reference)));
         whose.push_back(k);
-        if (chain.step + 1 < chain.steps) {  // its next request waits for this answer
+        if (chain.goes_on_after_next()) {  // its next request waits for this answer
           next = k;
           break;
         }
@@ -145,14 +131,7 @@ class Checker {
       // The answers before a fault are judged first: a wrong one is the counterexample the sequential run
       // reports, even when the candidate then breaks on a request the sequential run would not have sent.
       for (std::size_t i = 0; i < answers.size(); ++i) {
-        Chain& chain = chains[whose[i]];
-        ++chain.step;
-        if (auto d = compare(asked[i], expected[i], answers[i], options_.level)) {
-          chain.failure = Failure{chain.step, chain.steps, std::move(asked[i]), std::move(expected[i]),
-                                  std::move(answers[i]), *d};
-          return whose[i];
-        }
-        chain.now = std::move(answers[i]);
+        if (!chains[whose[i]].judge(std::move(answers[i]), std::move(expected[i]))) return whose[i];
       }
       if (read.broken) throw *read.broken;
       first = next;
@@ -272,7 +251,7 @@ class Run {
     for (const auto& [file, stored] : corpus) {
       Ending ending = Ending::checked;
       std::optional<Failure> failure = checker_.run(stored.world, options_.steps, ending);
-      if (ending == Ending::skipped) {
+      if (ending == Ending::no_reference_at_w0) {
         ++verdict_.not_replayed;
         continue;
       }
@@ -314,9 +293,9 @@ class Run {
         FamilyResult& family = verdict_.families[batch[k].family];
         ++verdict_.cases;
         ++family.drawn;
-        if (chains[k].ending == Ending::skipped) ++verdict_.skipped;
+        if (chains[k].ending() == Ending::no_reference_at_w0) ++verdict_.skipped;
         else ++family.checked;
-        verdict_.cut_short += chains[k].ending == Ending::cut_short;
+        verdict_.cut_short += chains[k].ending() == Ending::no_reference_later;
       }
       if (failed < chains.size()) return failed;
       batch.clear();
@@ -333,7 +312,7 @@ class Run {
       // At least as far as the family's boundary: tangent-after-step's tangency is decided at the second step.
       const std::uint64_t steps = std::max(options_.steps, properties::steps_to_decide(families[family]));
       batch.push_back(Case{c, family, cases_.world(c, random)});
-      chains.emplace_back(batch.back().world.value(), steps);
+      chains.emplace_back(batch.back().world.value(), steps, options_.level);
       if (batch.size() == kBatchCases) failed = check_batch();
     }
     if (!failed && !batch.empty()) failed = check_batch();
@@ -341,8 +320,8 @@ class Run {
 
     const auto& [c, family, drawn_world] = batch[*failed];
     rc::Shrinkable<Circles> world = drawn_world;
-    const std::uint64_t steps = chains[*failed].steps;
-    Failure failure = std::move(*chains[*failed].failure);
+    const std::uint64_t steps = chains[*failed].steps();
+    Failure failure = std::move(*chains[*failed].failure());
     Counterexample counterexample;
     counterexample.shrink_path = {world.value()};
     counterexample.circles_before = world.value().size();
