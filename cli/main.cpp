@@ -1,5 +1,6 @@
 // The `circles` program. With no subcommand it runs the main job on the embedded default scene: the oracle's
 // report, then every engine checked against the correctly rounded oracle step by step.
+#include "cli/check_trace_command.hpp"
 #include "cli/conform_report.hpp"
 #include "cli/oracle_report.hpp"
 #include "cli/report.hpp"
@@ -242,12 +243,17 @@ int main(int argc, char** argv) {
       }
       try {
         std::unique_ptr<Candidate> candidate;
-        if (exec.empty())
-          candidate = std::make_unique<EngineCandidate>(engine(engine_name), threads);
-        else
-          candidate = std::make_unique<ProcessCandidate>(
-              exec, std::chrono::milliseconds(static_cast<long long>(std::ceil(timeout * 1000))));
-        const Verdict verdict = circles::conform::check(*candidate, conform_options);
+        Verdict verdict;
+        try {
+          if (exec.empty())
+            candidate = std::make_unique<EngineCandidate>(engine(engine_name), threads);
+          else
+            candidate = std::make_unique<ProcessCandidate>(
+                exec, std::chrono::milliseconds(static_cast<long long>(std::ceil(timeout * 1000))));
+          verdict = circles::conform::check(*candidate, conform_options);
+        } catch (const BrokenCandidate& e) {  // it could not start: a verdict too, for the reports
+          verdict = unchecked("the program `" + exec + "`", conform_options, e.what());
+        }
         const int status = print_verdict(verdict, svg_file, std::cout, std::cerr);
         // The reports for CI, for every verdict; a report that cannot be written makes the run's status 2.
         const std::string text = counterexample_text(verdict);
@@ -259,9 +265,6 @@ int main(int argc, char** argv) {
           return 2;
         }
         return status;
-      } catch (const BrokenCandidate& e) {
-        std::cerr << "circles conform: " << e.what() << "\n";
-        return 2;
       } catch (const ConformError& e) {
         std::cerr << "circles conform: " << e.what() << "\n";
         return 2;

@@ -1,4 +1,5 @@
-// `circles check-trace FILE [--engine double|exact]`: checks a trace recorded by any implementation
+// The check of `circles check-trace FILE [--engine double|exact]` (printed by cli/check_trace_command.hpp):
+// checks a trace recorded by any implementation
 // (formats/trace_reader.hpp) step by step against the spec, and names the first step, circle and field that differ
 // (docs/vectors.md, "Checking a trace").
 //
@@ -18,7 +19,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
-#include <ostream>
 #include <string>
 #include <string_view>
 
@@ -55,13 +55,5 @@ struct TraceCheck {
 // Reads the trace and checks each world as it comes, stopping at the first divergence (the lines after it are
 // not read). Throws TraceReadError for the first line before it that breaks a rule of the reader.
 TraceCheck check_trace(TraceReader& reader, TraceReference reference);
-
-// The verdict, on `out`: "circles check-trace: t.jsonl: agrees with ..." or the divergence, its expected and
-// actual values in decimal and hexadecimal, and (for double) which decision differs.
-void print_check(const TraceCheck& check, const std::string& source, TraceReference reference, std::ostream& out);
-
-// The command: 0 when the trace agrees, 1 for a divergence (on `out`), 2 for a file that is not a trace (the
-// TraceReadError on `err`, "circles check-trace: FILE:LINE: reason").
-int check_trace_command(const std::string& path, TraceReference reference, std::ostream& out, std::ostream& err);
 
 }  // namespace circles::conform

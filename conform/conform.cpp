@@ -266,7 +266,10 @@ class Run {
       c.shrink_path = {stored.world};
       c.replay = "--save " + options_.save.string() + replay_options() + " (the corpus is replayed first)";
       for (FamilyResult& f : verdict_.families)
-        if (properties::name(f.family) == stored.family) f.has_counterexample = true;
+        if (properties::name(f.family) == stored.family) {
+          f.has_counterexample = true;
+          f.status = FamilyStatus::failed;
+        }
       fail(std::move(*failure), std::move(c));
       return;
     }
@@ -432,6 +435,17 @@ class Run {
 
 }  // namespace
 
+Verdict unchecked(std::string candidate, const Options& options, std::string error) {
+  Verdict verdict;
+  verdict.outcome = Outcome::cannot_check;
+  verdict.candidate = std::move(candidate);
+  verdict.options = options;
+  verdict.error = std::move(error);
+  for (const properties::Family f : properties::families(options.profile))
+    verdict.families.push_back({f, 0, 0, FamilyStatus::not_reached, false});
+  return verdict;
+}
+
 Verdict check(Candidate& candidate, const Options& options) {
   // A --save directory that cannot be used is a usage error, found before any case runs.
   if (!options.save.empty()) {
@@ -442,10 +456,8 @@ Verdict check(Candidate& candidate, const Options& options) {
                          (error ? ": " + error.message() : ": it is not a directory"));
   }
   const auto start = std::chrono::steady_clock::now();
-  Verdict verdict;
-  verdict.candidate = candidate.name();
-  verdict.options = options;
-  for (const properties::Family f : properties::families(options.profile)) verdict.families.push_back({f});
+  Verdict verdict = unchecked(candidate.name(), options, "");
+  verdict.outcome = Outcome::conforms;
   try {
     Run(candidate, options, verdict)();
   } catch (const BrokenCandidate& e) {
@@ -458,7 +470,7 @@ Verdict check(Candidate& candidate, const Options& options) {
   // A family with no checked case did not pass: the run stopped (a counterexample, a fault) before it, or
   // replayed one case or the corpus alone.
   for (FamilyResult& f : verdict.families)
-    if (f.status == FamilyStatus::passed && f.checked == 0) f.status = FamilyStatus::not_reached;
+    if (f.status != FamilyStatus::failed) f.status = f.checked > 0 ? FamilyStatus::passed : FamilyStatus::not_reached;
   verdict.elapsed = std::chrono::steady_clock::now() - start;
   return verdict;
 }

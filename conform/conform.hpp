@@ -124,6 +124,10 @@ struct Verdict {
 // whatever the shard: for tools that hand out conform's worlds (cli/vectors.hpp).
 std::vector<Circles> case_worlds(std::uint64_t seed, std::uint64_t cases, Profile profile = Profile::resolved);
 
+// The verdict cannot_check, for `error`, of a candidate not checked at all (a program that cannot start): no
+// case run, every family not reached.
+Verdict unchecked(std::string candidate, const Options& options, std::string error);
+
 // Checks `candidate`. A candidate that breaks (BrokenCandidate), a corpus file that cannot be replayed and a
 // family of which no case was checked give the verdict cannot_check, with the reason in `error`. Throws
 // ConformError only for a --save directory that cannot be used, before any case runs.

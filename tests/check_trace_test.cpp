@@ -1,6 +1,7 @@
 // `circles check-trace` (conform/check_trace.hpp) and its reader (formats/trace_reader.hpp): traces written by
 // `circles run` agree, a trace changed in one field by one ulp is caught at that step, circle and field, and
 // every trace that is not one is refused with its file, line and reason (exit 2), never a crash.
+#include "cli/check_trace_command.hpp"
 #include "conform/check_trace.hpp"
 #include "conform/engines.hpp"
 #include "cli/run.hpp"
