@@ -19,7 +19,7 @@
 // exits 1; bad usage exits 2. Output files are written beside the target and renamed.
 #include "bench/accuracy.hpp"
 
-#include "cli/scene.hpp"
+#include "formats/scene.hpp"
 #include "impl/exact_engine.hpp"
 
 #include <CLI/CLI.hpp>
@@ -100,7 +100,7 @@ const char* const kOutcomeHeader =
 // The bundled scene as read from its committed file, which must be the generated one.
 Scene committed(const Scene& generated, const std::filesystem::path& dir) {
   const std::filesystem::path file = dir / (generated.id + ".json");
-  const cli::Scene read = cli::load_scene(file.string());
+  const formats::Scene read = formats::load_scene(file.string());
   bool same = read.circles.size() == generated.circles.size() && read.steps == generated.steps &&
               read.name == generated.name;
   for (std::size_t k = 0; same && k < read.circles.size(); ++k)
@@ -248,7 +248,7 @@ int exactness(const std::filesystem::path& dir, const std::filesystem::path& csv
   std::string done;  // the rows of the scenes finished
   bool differs = false;
   for (const std::filesystem::path& file : files) {
-    const cli::Scene scene = cli::load_scene(file.string());
+    const formats::Scene scene = formats::load_scene(file.string());
     const std::string id = file.stem().string();
     const auto start = std::chrono::steady_clock::now();
     const auto row = [&](const Comparison& c, const char* end) {

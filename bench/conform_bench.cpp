@@ -9,21 +9,21 @@
 // answer and asks nothing). Every figure is per asked world, a request, so that the figures of one run
 // subtract.
 //
-//   conform_in_process/engine:E/profile:P   cli::conform on cli::EngineCandidate (`circles conform --engine E
+//   conform_in_process/engine:E/profile:P   conform::check on conform::EngineCandidate (`circles conform --engine E
 //                                           --threads 1`): drawing, the expected answer, the engine's step and
 //                                           the comparison: A per world (its CPU time: worlds per second per core).
-//   conform_protocol/serve:double           cli::conform on cli::ProcessCandidate running `circles serve
+//   conform_protocol/serve:double           conform::check on conform::ProcessCandidate running `circles serve
 //                                           --engine double --threads 1` (`circles conform --exec ...`): the
 //                                           same work, the step done by the other process, and the protocol.
 //                                           Real time: P per request.
-//   candidate_step/engine:double            cli::step_once on each asked world: S, the engine's step alone,
+//   candidate_step/engine:double            conform::step_once on each asked world: S, the engine's step alone,
 //                                           the part of A that the protocol run does in the other process.
-//   candidate_answer/engine:double          cli::answer on each asked world's request line: C, what `circles
+//   candidate_answer/engine:double          conform::answer on each asked world's request line: C, what `circles
 //                                           serve` does per request short of reading and writing its pipes
 //                                           (parse the request, step, format the response): the candidate's
 //                                           own time.
-//   pipe_echo/worlds                        cli::ProcessCandidate running `cat` on the asked worlds, in the
-//                                           batches conform sends them in (cli::Candidate::answer_all; Relay
+//   pipe_echo/worlds                        conform::ProcessCandidate running `cat` on the asked worlds, in the
+//                                           batches conform sends them in (conform::Candidate::answer_all; Relay
 //                                           records them): conform's side of the protocol (format the requests,
 //                                           write, wait, read, parse the answers) with a candidate that does
 //                                           nothing but echo.
@@ -40,11 +40,11 @@
 // protocol adds, which the machine's load does not inflate: P's CPU time is then conform's plus the candidate
 // process's, which the counter child_cpu_per_item gives); docs/benchmarks.md says so beside the figures.
 #include "bench/harness.hpp"
-#include "cli/candidate.hpp"
-#include "cli/conform.hpp"
-#include "cli/engines.hpp"
-#include "cli/protocol.hpp"
-#include "cli/serve.hpp"
+#include "conform/candidate.hpp"
+#include "conform/conform.hpp"
+#include "conform/engines.hpp"
+#include "formats/protocol.hpp"
+#include "conform/serve.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -63,7 +63,7 @@
 namespace circles::bench {
 namespace {
 
-using cli::Circles;
+using formats::Circles;
 using properties::Profile;
 
 constexpr std::uint64_t kSeed = 1;
@@ -78,8 +78,8 @@ constexpr benchmark::IterationCount kEmptyRoundTrips = 20'000;
 
 std::uint64_t cases(Profile profile) { return kRounds * properties::families(profile).size(); }
 
-cli::ConformOptions default_cases(Profile profile) {
-  cli::ConformOptions options;
+conform::Options default_cases(Profile profile) {
+  conform::Options options;
   options.cases = cases(profile);
   options.seed = kSeed;
   options.profile = profile;
@@ -87,18 +87,18 @@ cli::ConformOptions default_cases(Profile profile) {
 }
 
 // A candidate behind conform that counts its requests and the batches conform sends them in
-// (cli::Candidate::answer_all) and, given a list, records each world asked. It does
+// (conform::Candidate::answer_all) and, given a list, records each world asked. It does
 // not pass on the end of the input (conform ends each run with finish(), which would close a process's
 // input): a process candidate then lasts over a benchmark's iterations, its start-up and exit outside the
 // timing, which is per request, and the benchmark finishes it itself.
-class Relay : public cli::Candidate {
+class Relay : public conform::Candidate {
  public:
-  explicit Relay(cli::Candidate& inner, std::vector<Circles>* record = nullptr) : inner_(inner), record_(record) {}
+  explicit Relay(conform::Candidate& inner, std::vector<Circles>* record = nullptr) : inner_(inner), record_(record) {}
   Circles answer(const Circles& world, std::uint64_t id) override {
     return std::move(answer_all(std::span(&world, 1), id).all().front());
   }
   // Passed on whole, so that a process candidate gets conform's batches as conform sends them.
-  cli::Answers answer_all(std::span<const Circles> worlds, std::uint64_t first_id) override {
+  conform::Answers answer_all(std::span<const Circles> worlds, std::uint64_t first_id) override {
     requests += worlds.size();
     batches.push_back(worlds.size());
     if (record_) record_->insert(record_->end(), worlds.begin(), worlds.end());
@@ -109,21 +109,21 @@ class Relay : public cli::Candidate {
   std::vector<std::size_t> batches;  // the requests of each batch, in order
 
  private:
-  cli::Candidate& inner_;
+  conform::Candidate& inner_;
   std::vector<Circles>* record_;
 };
 
 // Runs conform once on `candidate`; a verdict other than "conforms" is the benchmark's error, not a figure.
-void check(cli::Candidate& candidate, Profile profile) {
-  std::ostringstream out;
-  if (cli::conform(candidate, default_cases(profile), out) != 0)
-    throw std::runtime_error("conform found a counterexample:\n" + out.str());
+void check(conform::Candidate& candidate, Profile profile) {
+  const conform::Verdict verdict = conform::check(candidate, default_cases(profile));
+  if (verdict.outcome != conform::Outcome::conforms)
+    throw std::runtime_error(std::string("conform's verdict: ") + conform::name(verdict.outcome) + " " + verdict.error);
 }
 
 // The worlds conform asks a conforming candidate, in order, recorded from a run on the double engine, and,
 // given a list, the requests of each batch it sends them in.
 std::vector<Circles> asked_worlds(Profile profile, std::vector<std::size_t>* batches = nullptr) {
-  cli::EngineCandidate engine(cli::engine("double"), 1);
+  conform::EngineCandidate engine(conform::engine("double"), 1);
   std::vector<Circles> asked;
   Relay recorder(engine, &asked);
   check(recorder, profile);
@@ -164,7 +164,7 @@ void count_child_cpu(benchmark::State& state, std::size_t items_per_iteration, d
 
 // Runs conform on `candidate` once per iteration. Returns the requests of one iteration (every iteration
 // asks the same worlds).
-std::size_t run_conform(benchmark::State& state, cli::Candidate& candidate, Profile profile) {
+std::size_t run_conform(benchmark::State& state, conform::Candidate& candidate, Profile profile) {
   Relay relay(candidate);
   for (auto _ : state) check(relay, profile);
   const auto asked = static_cast<std::size_t>(relay.requests / static_cast<std::uint64_t>(state.iterations()));
@@ -174,13 +174,13 @@ std::size_t run_conform(benchmark::State& state, cli::Candidate& candidate, Prof
 }
 
 void conform_in_process(benchmark::State& state, const char* engine, Profile profile) {
-  cli::EngineCandidate candidate(cli::engine(engine), 1);
+  conform::EngineCandidate candidate(conform::engine(engine), 1);
   run_conform(state, candidate, profile);
 }
 
 void conform_protocol(benchmark::State& state) {
   const double before = children_cpu_seconds();
-  cli::ProcessCandidate serve(serve_command(), kDeadline);
+  conform::ProcessCandidate serve(serve_command(), kDeadline);
   serve.answer({}, 0);  // untimed: waits for the program to start and load
   const std::size_t asked = run_conform(state, serve, Profile::resolved);
   serve.finish();
@@ -189,20 +189,20 @@ void conform_protocol(benchmark::State& state) {
 
 void candidate_step(benchmark::State& state) {
   const std::vector<Circles> worlds = asked_worlds(Profile::resolved);
-  const cli::EngineEntry& engine = cli::engine("double");
+  const conform::EngineEntry& engine = conform::engine("double");
   for (auto _ : state)
-    for (const Circles& w : worlds) benchmark::DoNotOptimize(cli::step_once(engine, w, 1));
+    for (const Circles& w : worlds) benchmark::DoNotOptimize(conform::step_once(engine, w, 1));
   count(state, worlds.size());
 }
 
 void candidate_answer(benchmark::State& state) {
   std::vector<std::string> requests;
   for (const Circles& w : asked_worlds(Profile::resolved))
-    requests.push_back(cli::format_line(cli::kId, requests.size() + 1, w));
-  const cli::EngineEntry& engine = cli::engine("double");
+    requests.push_back(formats::format_line(formats::kId, requests.size() + 1, w));
+  const conform::EngineEntry& engine = conform::engine("double");
   for (auto _ : state)
     for (std::size_t k = 0; k < requests.size(); ++k)
-      benchmark::DoNotOptimize(cli::answer(engine, 1, requests[k], k + 1));
+      benchmark::DoNotOptimize(conform::answer(engine, 1, requests[k], k + 1));
   count(state, requests.size());
 }
 
@@ -211,7 +211,7 @@ void pipe_echo(benchmark::State& state, bool empty) {
   std::vector<std::size_t> batches{1};
   const std::vector<Circles> worlds = empty ? std::vector<Circles>(1) : asked_worlds(Profile::resolved, &batches);
   const double before = children_cpu_seconds();
-  cli::ProcessCandidate cat("exec cat", kDeadline);
+  conform::ProcessCandidate cat("exec cat", kDeadline);
   std::uint64_t id = 0;
   cat.answer({}, id++);  // untimed: waits for cat to start
   for (auto _ : state) {

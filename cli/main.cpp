@@ -1,20 +1,24 @@
 // The `circles` program. With no subcommand it runs the main job on the embedded default scene: the oracle's
 // report, then every engine checked against the correctly rounded oracle step by step.
-#include "cli/candidate.hpp"
-#include "cli/check_trace.hpp"
-#include "cli/conform.hpp"
-#include "cli/engines.hpp"
+#include "cli/check_trace_command.hpp"
+#include "cli/conform_report.hpp"
 #include "cli/oracle_report.hpp"
+#include "cli/report.hpp"
+#include "conform/candidate.hpp"
+#include "conform/check_trace.hpp"
+#include "conform/conform.hpp"
+#include "conform/engines.hpp"
 #include "cli/run.hpp"
-#include "cli/scene.hpp"
-#include "cli/serve.hpp"
 #include "cli/vectors.hpp"
+#include "conform/serve.hpp"
+#include "formats/scene.hpp"
 
 #include <CLI/CLI.hpp>
 
 #include <unistd.h>
 
 #include <cmath>
+#include <filesystem>
 #include <cstdint>
 #include <tuple>
 #include <iostream>
@@ -25,6 +29,8 @@
 namespace {
 
 using namespace circles::cli;
+using namespace circles::conform;
+using namespace circles::formats;
 
 // "The engine, one of: double (the double engine ...); oracle (...)", from the registry.
 std::string engine_help() {
@@ -125,7 +131,7 @@ int main(int argc, char** argv) {
   run->add_flag("--stats", stats, "Also print the run's figures: steps, circles, engine, threads, times, ns per circle-step");
 
   std::string exec, level = "exact", shard = "0/1", profile = "resolved", save_dir, svg_file;
-  circles::cli::ConformOptions conform_options;
+  circles::conform::Options conform_options;
   conform_options.seed = std::random_device{}();
   double timeout = 10;
   std::uint64_t only_case = 0;
@@ -149,12 +155,23 @@ int main(int argc, char** argv) {
   conform->add_option("--save", save_dir,
                       "Replay every counterexample stored in DIR first, and store a new one there (with its picture)");
   conform->add_option("--svg", svg_file,
-                      "Draw a counterexample's picture in FILE (default: beside it in --save DIR, else in the "
-                      "temporary directory)");
+                      "Draw a counterexample's picture in FILE (default: beside it in --save DIR, else none)");
   conform->add_option("--timeout", timeout, "Seconds to wait for each answer")
       ->capture_default_str()
       ->check(CLI::Range(0.001, 3600.0));
   CLI::Option* case_option = conform->add_option("--case", only_case, "Check only this case (to replay a counterexample)");
+  std::string report_file, junit_file;
+  conform->add_option("--report", report_file, "Also write the verdict as JSON to FILE (docs/conform.md, Reports for CI)");
+  conform->add_option("--junit", junit_file, "Also write the verdict as JUnit XML to FILE, a test case per family");
+
+  CLI::App* report = app.add_subcommand("report", "Work with the JSON reports of circles conform --report");
+  report->require_subcommand(1, 1);
+  std::string merged_file;
+  std::vector<std::string> shard_files;
+  CLI::App* merge = report->add_subcommand(
+      "merge", "Combine the reports of the shards of one run into OUT; exits 0, 1 or 2 as the merged verdict");
+  merge->add_option("out", merged_file, "The merged report (written whole or not at all)")->required();
+  merge->add_option("reports", shard_files, "The shards' reports")->required()->check(CLI::ExistingFile);
 
   circles::cli::VectorsOptions vectors_options;
   CLI::App* vectors = app.add_subcommand(
@@ -194,16 +211,17 @@ int main(int argc, char** argv) {
   try {
     if (*serve) {
       std::ios::sync_with_stdio(false);  // serve reads and writes only through the C++ streams
-      return circles::cli::serve(engine(engine_name), threads, std::cin, std::cout, std::cerr);
+      return circles::conform::serve(engine(engine_name), threads, std::cin, std::cout, std::cerr);
     }
     if (*vectors) return circles::cli::vectors_command(vectors_options, std::cout, std::cerr);
+    if (*merge) return circles::cli::merge_command(merged_file, shard_files, std::cerr);
     if (*check_trace)
       return check_trace_command(trace_file, trace_reference(trace_engine), std::cout, std::cerr);
     if (*conform) {
       try {
-        conform_options.level = circles::cli::parse_level(level);
+        conform_options.level = circles::properties::parse_level(level);
         conform_options.profile = circles::properties::parse_profile(profile);
-        std::tie(conform_options.shard, conform_options.shards) = circles::cli::parse_shard(shard);
+        std::tie(conform_options.shard, conform_options.shards) = circles::conform::parse_shard(shard);
       } catch (const std::invalid_argument& e) {
         std::cerr << "circles conform: " << e.what() << "\n";
         return 2;
@@ -214,19 +232,39 @@ int main(int argc, char** argv) {
       }
       if (*case_option) conform_options.only_case = only_case;
       conform_options.save = save_dir;
-      conform_options.svg = svg_file;
-      conform_options.picture_in_temp = true;
+      // A --svg file that cannot be written is a usage error, found before any case runs.
+      if (const std::filesystem::path svg = svg_file; !svg.empty()) {
+        const std::filesystem::path parent = svg.parent_path().empty() ? "." : svg.parent_path();
+        if (!std::filesystem::is_directory(parent)) {
+          std::cerr << "circles conform: --svg: cannot write " << svg.string() << ": the directory " << parent.string()
+                    << " does not exist\n";
+          return 2;
+        }
+      }
       try {
         std::unique_ptr<Candidate> candidate;
-        if (exec.empty())
-          candidate = std::make_unique<EngineCandidate>(engine(engine_name), threads);
-        else
-          candidate = std::make_unique<ProcessCandidate>(
-              exec, std::chrono::milliseconds(static_cast<long long>(std::ceil(timeout * 1000))));
-        return circles::cli::conform(*candidate, conform_options, std::cout);
-      } catch (const BrokenCandidate& e) {
-        std::cerr << "circles conform: " << e.what() << "\n";
-        return 2;
+        Verdict verdict;
+        try {
+          if (exec.empty())
+            candidate = std::make_unique<EngineCandidate>(engine(engine_name), threads);
+          else
+            candidate = std::make_unique<ProcessCandidate>(
+                exec, std::chrono::milliseconds(static_cast<long long>(std::ceil(timeout * 1000))));
+          verdict = circles::conform::check(*candidate, conform_options);
+        } catch (const BrokenCandidate& e) {  // it could not start: a verdict too, for the reports
+          verdict = unchecked("the program `" + exec + "`", conform_options, e.what());
+        }
+        const int status = print_verdict(verdict, svg_file, std::cout, std::cerr);
+        // The reports for CI, for every verdict; a report that cannot be written makes the run's status 2.
+        const std::string text = counterexample_text(verdict);
+        try {
+          if (!report_file.empty()) write_report(report_file, "--report", json_report(verdict, text));
+          if (!junit_file.empty()) write_report(junit_file, "--junit", junit_report(verdict, text));
+        } catch (const OutputError& e) {
+          std::cerr << "circles conform: " << e.what() << "\n";
+          return 2;
+        }
+        return status;
       } catch (const ConformError& e) {
         std::cerr << "circles conform: " << e.what() << "\n";
         return 2;

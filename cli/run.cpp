@@ -1,11 +1,13 @@
 #include "cli/run.hpp"
 
-#include "cli/json_number.hpp"
-#include "cli/progress.hpp"
-#include "cli/protocol.hpp"
-#include "cli/render.hpp"
+#include "properties/chain.hpp"
+
+#include "formats/json_number.hpp"
+#include "pictures/progress.hpp"
+#include "formats/protocol.hpp"
+#include "pictures/render.hpp"
 #include "cli/vectors.hpp"  // append_exact_world
-#include "cli/video.hpp"
+#include "pictures/video.hpp"
 
 #include <algorithm>
 #include <iomanip>
@@ -17,14 +19,7 @@
 
 namespace circles::cli {
 
-Circles doubles_of(const std::vector<spec::Circle>& scene) {
-  Circles w;
-  w.reserve(scene.size());
-  for (const spec::Circle& c : scene) w.push_back(spec::nearest_doubles(c));
-  return w;
-}
-
-Circles doubles_of(const Scene& scene) { return doubles_of(scene.circles); }
+using namespace circles::pictures;
 
 using Clock = std::chrono::steady_clock;
 
@@ -242,6 +237,9 @@ void print_stats(const RunResult& result, std::size_t circles, const RunOptions&
 Comparison compare_with_oracle(const EngineEntry& engine, const Circles& world, std::uint64_t steps, unsigned threads) {
   const auto oracle = reference(engine, world);
   const auto candidate = engine.start(world, threads);
+  // The engine's worlds as a chain's answers (properties/chain.hpp), each against the oracle's, compared by value
+  // (-0 == +0, every field exactly): the oracle keeps its own sequence, the same worlds while the two agree.
+  properties::Chain chain(world, steps);
   Comparison c;
   for (; c.steps < steps; ++c.steps) {
     const std::uint64_t step = c.steps + 1;
@@ -268,20 +266,19 @@ Comparison compare_with_oracle(const EngineEntry& engine, const Circles& world, 
       }
       return c;
     }
-    const Circles want = oracle->circles(), got = candidate->circles();
+    Circles want = oracle->circles(), got = candidate->circles();
     if (want.size() != got.size()) {
       c.difference = "step " + std::to_string(step) + ": the oracle has " + std::to_string(want.size()) +
                      " circles, the engine " + std::to_string(got.size());
       return c;
     }
-    for (std::size_t k = 0; k < want.size(); ++k)
-      for (std::size_t f = 0; f < want[k].size(); ++f)
-        if (want[k][f] != got[k][f]) {  // by value: -0 == +0
-          c.difference = "step " + std::to_string(step) + ", circle " + std::to_string(k) + ", field " +
-                         spec::name(spec::Field(f)) + ": oracle " + json_number::decimal_and_hex(want[k][f]) +
-                         ", engine " + json_number::decimal_and_hex(got[k][f]);
-          return c;
-        }
+    if (!chain.judge(std::move(got), std::move(want))) {
+      const properties::Difference& d = chain.failure()->difference;
+      c.difference = "step " + std::to_string(step) + ", circle " + std::to_string(d.circle) + ", field " +
+                     spec::name(spec::Field(d.field)) + ": oracle " + json_number::decimal_and_hex(d.expected) +
+                     ", engine " + json_number::decimal_and_hex(d.actual);
+      return c;
+    }
   }
   return c;
 }

@@ -2,9 +2,9 @@
 // video if asked (docs/run.md), and an engine stepped side by side with the oracle.
 #pragma once
 
-#include "cli/engines.hpp"
-#include "cli/output_file.hpp"
-#include "cli/scene.hpp"
+#include "conform/engines.hpp"
+#include "formats/output_file.hpp"
+#include "formats/scene.hpp"
 #include "spec/circle.hpp"
 
 #include <chrono>
@@ -16,12 +16,11 @@
 
 namespace circles::cli {
 
-// The doubles of a scene: every coordinate of a loaded scene is the exact value of a double (cli/scene.hpp),
-// so this gives those doubles back (a -0 as +0: a rational has no sign, and no step can tell them apart).
-Circles doubles_of(const std::vector<spec::Circle>& scene);
-Circles doubles_of(const Scene& scene);
+// The program's layer names the libraries' types and functions unqualified.
+using namespace circles::formats;
+using namespace circles::conform;
 
-// A trace that cannot be written: what() names the file and the system's reason (cli/output_file.hpp).
+// A trace that cannot be written: what() names the file and the system's reason (formats/output_file.hpp).
 using TraceError = OutputError;
 
 struct RunOptions {
@@ -34,7 +33,7 @@ struct RunOptions {
   std::uint64_t every = 1;  // --every K: a frame of w_t for each t that is a multiple of K (K >= 1)
   std::string video{};      // --video FILE.mp4, or empty for none
   bool fit = false;         // --fit: View::fit of every frame's circles instead of world units = pixels
-  std::ostream* progress = nullptr;  // the progress bar's terminal (cli/progress.hpp), or nullptr: quiet
+  std::ostream* progress = nullptr;  // the progress bar's terminal (pictures/progress.hpp), or nullptr: quiet
 };
 
 struct RunResult {

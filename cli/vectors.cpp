@@ -1,10 +1,9 @@
 #include "cli/vectors.hpp"
 
-#include "cli/conform.hpp"
-#include "cli/json_number.hpp"
-#include "cli/output_file.hpp"
-#include "cli/run.hpp"
-#include "cli/scene.hpp"
+#include "conform/conform.hpp"
+#include "formats/json_number.hpp"
+#include "formats/output_file.hpp"
+#include "formats/scene.hpp"
 #include "impl/state_hash.hpp"
 #include "properties/features.hpp"
 
@@ -13,11 +12,11 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <iomanip>
-#include <sstream>
 #include <system_error>
 
 namespace circles::cli {
+
+using conform::case_worlds;
 namespace {
 
 namespace fs = std::filesystem;
@@ -83,12 +82,6 @@ std::string fraction(const spec::Q& q) {
 }
 
 void append_exact_world(std::string& out, const std::vector<spec::Circle>& w) { append_rows(out, w, append_fraction); }
-
-std::string hash_text(std::uint64_t hash) {
-  std::ostringstream out;
-  out << std::hex << std::setw(16) << std::setfill('0') << hash;
-  return out.str();
-}
 
 std::vector<std::string> features_of(const Circles& w) {
   const std::vector<spec::Circle> exact = exact_circles(w);

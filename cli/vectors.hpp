@@ -3,12 +3,12 @@
 // A vector is one world of doubles and its next world under the resolved step: exact, as rationals from the
 // oracle (spec::resolved_step), and correctly rounded, as doubles in shortest decimal and in hexadecimal, with
 // the canonical state hash (impl/state_hash.hpp) of the world and of its rounded next world. The cases are the
-// first worlds of each bundled scene and conform's generated worlds (cli/conform.hpp, case_worlds), which are
+// first worlds of each bundled scene and conform's generated worlds (conform/conform.hpp, case_worlds), which are
 // rich in contacts, exact tangencies, ties and copies. All of them go to one JSON Lines file, DIR/vectors.jsonl,
 // one case per line, written beside its place and renamed into it, so DIR never holds a half-written file.
 #pragma once
 
-#include "cli/protocol.hpp"
+#include "formats/protocol.hpp"
 #include "spec/oracle.hpp"
 
 #include <cstddef>
@@ -21,6 +21,9 @@
 #include <vector>
 
 namespace circles::cli {
+
+// The program's layer names the libraries' types and functions unqualified.
+using namespace circles::formats;
 
 // The vectors cannot be made or written: what() names the file or directory and the reason.
 class VectorsError : public std::runtime_error {
@@ -72,8 +75,6 @@ std::string fraction(const spec::Q& q);
 // as a vector's next exact world and a line of `circles run --exact-trace` hold it.
 void append_exact_world(std::string& out, const std::vector<spec::Circle>& w);
 
-// The 16 lowercase hexadecimal digits of a state hash.
-std::string hash_text(std::uint64_t hash);
 
 struct VectorsSummary {
   std::string file;                  // DIR/vectors.jsonl

@@ -1,13 +1,17 @@
-// libFuzzer target for the protocol reader, cli::parse_line, with both counters ("id" for requests, "step"
+// libFuzzer target for the protocol reader, formats::parse_line, with both counters ("id" for requests, "step"
 // for trace lines): any bytes give a line of finite doubles with r >= 0 or a ProtocolError naming the line,
-// never another exception or a crash. A line read, written (cli::format_line) and read again gives the same
+// never another exception or a crash. A line read, written (formats::format_line) and read again gives the same
 // counter and the same doubles bit for bit: the writer keeps -0 as "-0.0", so no sign is lost after the first
 // read (an integer token "-0" is read as +0 by the rule of docs/protocol.md, and that is what is compared).
-#include "cli/protocol.hpp"
+// Read as a candidate's answer (Reading::answer: NaN and infinities as values, unknown keys ignored, the text
+// blanked before nlohmann's parse), any bytes give a line or a ProtocolError of the same shape, and every line
+// the strict reader takes reads the same, bit for bit.
+#include "formats/protocol.hpp"
 #include "fuzz/check.hpp"
 
 #include <cmath>
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -17,26 +21,46 @@ namespace {
 
 constexpr std::size_t kLine = 7;  // any line number: the check is that messages carry it
 
-void check(std::string_view text, std::string_view counter) {
-  cli::Line line;
+void require_message(const formats::ProtocolError& e) {
+  const std::string_view message = e.what();
+  fuzz::require(e.line == kLine, "the error carries the line number", message);
+  fuzz::require(message == "line 7: " + e.reason, "the message is \"line L: reason\"", message);
+  fuzz::require(fuzz::is_one_printable_line(message), "the message is one line of printable ASCII", message);
+}
+
+// The line as an answer, or nothing with the error checked.
+std::optional<formats::Line> answer(std::string_view text) {
   try {
-    line = cli::parse_line(text, kLine, counter);
-  } catch (const cli::ProtocolError& e) {
-    const std::string_view message = e.what();
-    fuzz::require(e.line == kLine, "the error carries the line number", message);
-    fuzz::require(message == "line 7: " + e.reason, "the message is \"line L: reason\"", message);
-    fuzz::require(fuzz::is_one_printable_line(message), "the message is one line of printable ASCII", message);
+    return formats::parse_line(text, kLine, formats::kId, formats::Reading::answer);
+  } catch (const formats::ProtocolError& e) {
+    require_message(e);
+    return std::nullopt;
+  }
+}
+
+void check(std::string_view text, std::string_view counter) {
+  formats::Line line;
+  try {
+    line = formats::parse_line(text, kLine, counter);
+  } catch (const formats::ProtocolError& e) {
+    require_message(e);
     return;
+  }
+  if (counter == formats::kId) {
+    const std::optional<formats::Line> as_answer = answer(text);
+    fuzz::require(as_answer.has_value(), "a line read strictly reads as an answer", std::string(text));
+    fuzz::require(as_answer->number == line.number && fuzz::same_bits(as_answer->circles, line.circles),
+                  "read as an answer, a strict line is the same", std::string(text));
   }
   for (const auto& circle : line.circles) {
     for (const double x : circle) fuzz::require(std::isfinite(x), "every number is finite");
     fuzz::require(circle[4] >= 0, "every radius is >= 0");
   }
-  const std::string written = cli::format_line(counter, line.number, line.circles);
-  const cli::Line again = cli::parse_line(written, kLine, counter);
+  const std::string written = formats::format_line(counter, line.number, line.circles);
+  const formats::Line again = formats::parse_line(written, kLine, counter);
   fuzz::require(again.number == line.number, "the counter reads back", written);
   fuzz::require(fuzz::same_bits(again.circles, line.circles), "the doubles read back bit for bit", written);
-  fuzz::require(cli::format_line(counter, again.number, again.circles) == written, "writing is a fixed point",
+  fuzz::require(formats::format_line(counter, again.number, again.circles) == written, "writing is a fixed point",
                 written);
 }
 
@@ -44,7 +68,8 @@ void check(std::string_view text, std::string_view counter) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
-  check(text, cli::kId);
-  check(text, cli::kStep);
+  check(text, formats::kId);
+  check(text, formats::kStep);
+  answer(text);
   return 0;
 }

@@ -1,10 +1,10 @@
-// libFuzzer target for the trace reader, cli::TraceReader (what `circles check-trace` reads): any bytes give a
+// libFuzzer target for the trace reader, formats::TraceReader (what `circles check-trace` reads): any bytes give a
 // sequence of worlds or a TraceReadError naming the source, never another exception or a crash. The worlds
 // read keep the trace's rules: finite doubles with r >= 0, consecutive steps, one length. A failure after some
-// worlds names a line after theirs; and the worlds read, written again as a trace (cli::format_line) and read
+// worlds names a line after theirs; and the worlds read, written again as a trace (formats::format_line) and read
 // back, are the same bit for bit.
-#include "cli/protocol.hpp"
-#include "cli/trace_reader.hpp"
+#include "formats/protocol.hpp"
+#include "formats/trace_reader.hpp"
 #include "fuzz/check.hpp"
 
 #include <cmath>
@@ -24,17 +24,17 @@ namespace {
 const std::string kSource = "fuzz.jsonl";
 
 // Reads `text` to its end or to its first fault: the worlds read, and the error if there was one.
-std::vector<cli::Line> read(const std::string& text, std::optional<cli::TraceReadError>& error,
+std::vector<formats::Line> read(const std::string& text, std::optional<formats::TraceReadError>& error,
                             std::vector<std::size_t>& lines) {
   std::istringstream in(text);
-  cli::TraceReader reader(in, kSource);
-  std::vector<cli::Line> worlds;
+  formats::TraceReader reader(in, kSource);
+  std::vector<formats::Line> worlds;
   try {
-    while (std::optional<cli::Line> w = reader.next()) {
+    while (std::optional<formats::Line> w = reader.next()) {
       worlds.push_back(std::move(*w));
       lines.push_back(reader.line());
     }
-  } catch (const cli::TraceReadError& e) {
+  } catch (const formats::TraceReadError& e) {
     error = e;
   }
   return worlds;
@@ -44,9 +44,9 @@ std::vector<cli::Line> read(const std::string& text, std::optional<cli::TraceRea
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
-  std::optional<cli::TraceReadError> error;
+  std::optional<formats::TraceReadError> error;
   std::vector<std::size_t> lines;
-  const std::vector<cli::Line> worlds = read(text, error, lines);
+  const std::vector<formats::Line> worlds = read(text, error, lines);
 
   if (error) {
     const std::string_view message = error->what();
@@ -72,10 +72,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // The worlds written as a trace read back the same, line after line, with no fault.
   if (worlds.empty()) return 0;
   std::string written;
-  for (const cli::Line& w : worlds) written += cli::format_line(cli::kStep, w.number, w.circles) + "\n";
-  std::optional<cli::TraceReadError> again_error;
+  for (const formats::Line& w : worlds) written += formats::format_line(formats::kStep, w.number, w.circles) + "\n";
+  std::optional<formats::TraceReadError> again_error;
   std::vector<std::size_t> again_lines;
-  const std::vector<cli::Line> again = read(written, again_error, again_lines);
+  const std::vector<formats::Line> again = read(written, again_error, again_lines);
   fuzz::require(!again_error, "the worlds written as a trace read back", again_error ? again_error->what() : "");
   fuzz::require(again.size() == worlds.size(), "as many worlds read back", written);
   for (std::size_t t = 0; t < worlds.size(); ++t) {

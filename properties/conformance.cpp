@@ -1,5 +1,7 @@
 #include "properties/conformance.hpp"
 
+#include "properties/chain.hpp"
+
 #include "impl/engine.hpp"
 #include "impl/predicate.hpp"
 #include "spec/oracle.hpp"
@@ -133,22 +135,22 @@ std::optional<Difference> compare(const Circles& input, const Circles& expected,
 void step_conforms(const Step& step, const Options& options) {
   const auto [family, w_0] = *gen::boundary_case(options.profile);
   RC_TAG(name(family));
-  Circles now = w_0;
-  const std::uint64_t steps = std::max(options.steps, steps_to_decide(family));
-  for (std::uint64_t n = 1; n <= steps; ++n) {
-    const auto expected = expected_step(now, options.profile);
+  Chain chain(w_0, std::max(options.steps, steps_to_decide(family)), options.level);
+  while (chain.going()) {
+    auto expected = expected_step(chain.input(), options.profile);
     if (!std::holds_alternative<Circles>(expected)) return;
-    const Circles actual = step(now);
-    if (actual.size() != now.size())
-      RC_FAIL("step " + std::to_string(n) + ": asked " + std::to_string(now.size()) + " circles, answered " +
-              std::to_string(actual.size()));
-    if (const auto d = compare(now, std::get<Circles>(expected), actual, options.level)) {
-      RC_LOG() << "family " << name(family) << ", step " << n << " of " << steps << ", "
+    Circles actual = step(chain.input());
+    if (actual.size() != chain.input().size())
+      RC_FAIL("step " + std::to_string(chain.step() + 1) + ": asked " + std::to_string(chain.input().size()) +
+              " circles, answered " + std::to_string(actual.size()));
+    if (!chain.judge(std::move(actual), std::move(std::get<Circles>(expected)))) {
+      const ChainFailure& f = *chain.failure();
+      const Difference& d = f.difference;
+      RC_LOG() << "family " << name(family) << ", step " << f.step << " of " << f.steps << ", "
                << name(options.profile) << " profile, level " << options.level.text() << "\n";
-      RC_FAIL("circle " + std::to_string(d->circle) + ", field " + field_name(d->field) + ": expected " +
-              hex(d->expected) + ", got " + hex(d->actual) + "; which decision: " + d->decision);
+      RC_FAIL("circle " + std::to_string(d.circle) + ", field " + field_name(d.field) + ": expected " +
+              hex(d.expected) + ", got " + hex(d.actual) + "; which decision: " + d.decision);
     }
-    now = actual;
   }
 }
 

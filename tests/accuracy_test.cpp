@@ -4,7 +4,7 @@
 //   - on tangency_sixtieths the rounding engines miss or make contacts the exact run makes or misses;
 //   - the exact engine equals the oracle on every bundled scene, and over 10^4 steps on the small ones.
 // The designs are restated here by hand (with their arithmetic), not read from bench/accuracy_scenes.cpp.
-#include "cli/scene.hpp"
+#include "formats/scene.hpp"
 #include "impl/engine.hpp"
 #include "impl/exact_engine.hpp"
 #include "spec/circle.hpp"
@@ -22,7 +22,7 @@ namespace {
 
 const std::string scenes = std::string(CIRCLES_SOURCE_DIR) + "/scenes/";
 
-spec::Sequence load(const std::string& name) { return cli::load_scene(scenes + name + ".json").circles; }
+spec::Sequence load(const std::string& name) { return formats::load_scene(scenes + name + ".json").circles; }
 
 std::vector<std::array<double, 5>> doubles(const spec::Sequence& w) {
   std::vector<std::array<double, 5>> out;

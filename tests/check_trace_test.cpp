@@ -1,11 +1,12 @@
-// `circles check-trace` (cli/check_trace.hpp) and its reader (cli/trace_reader.hpp): traces written by
+// `circles check-trace` (conform/check_trace.hpp) and its reader (formats/trace_reader.hpp): traces written by
 // `circles run` agree, a trace changed in one field by one ulp is caught at that step, circle and field, and
 // every trace that is not one is refused with its file, line and reason (exit 2), never a crash.
-#include "cli/check_trace.hpp"
-#include "cli/engines.hpp"
+#include "cli/check_trace_command.hpp"
+#include "conform/check_trace.hpp"
+#include "conform/engines.hpp"
 #include "cli/run.hpp"
-#include "cli/scene.hpp"
-#include "cli/trace_reader.hpp"
+#include "formats/scene.hpp"
+#include "formats/trace_reader.hpp"
 #include "impl/state_hash.hpp"
 #include "tests/temp_dir.hpp"
 #include "tests/thrown.hpp"

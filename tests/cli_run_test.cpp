@@ -1,11 +1,11 @@
-// The engine registry, `circles serve`'s line handling and `circles run`'s trace (cli/engines.hpp,
-// cli/serve.hpp, cli/run.hpp), each held to spec::resolved_step_rounded, the correctly rounded oracle step.
-#include "cli/engines.hpp"
-#include "cli/progress.hpp"
-#include "cli/protocol.hpp"
+// The engine registry, `circles serve`'s line handling and `circles run`'s trace (conform/engines.hpp,
+// conform/serve.hpp, cli/run.hpp), each held to spec::resolved_step_rounded, the correctly rounded oracle step.
+#include "conform/engines.hpp"
+#include "pictures/progress.hpp"
+#include "formats/protocol.hpp"
 #include "cli/run.hpp"
-#include "cli/scene.hpp"
-#include "cli/serve.hpp"
+#include "formats/scene.hpp"
+#include "conform/serve.hpp"
 
 #include "properties/generators.hpp"
 #include "spec/oracle.hpp"
@@ -30,6 +30,8 @@
 #include <vector>
 
 namespace circles::cli {
+
+using namespace circles::pictures;
 namespace {
 
 using circles::testing::thrown;

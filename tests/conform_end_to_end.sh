@@ -67,6 +67,39 @@ draws_the_picture_where_svg_says)
   [ "$(cat "$dir/err")" = "circles conform: --svg: cannot write $dir/no/such/picture.svg: the directory $dir/no/such \
 does not exist" ] || fail "unexpected message: $(cat "$dir/err")"
   ;;
+draws_no_picture_unless_asked)
+  # Without --svg or --save a failing run draws nothing, in the temporary directory or anywhere: CI loops stay clean.
+  mkdir "$dir/tmp"
+  export TMPDIR="$dir/tmp"
+  run_conform 1 --seed 3 --exec "$naive"
+  ! grep -q "^picture:" "$dir/out" || fail "a picture without --svg or --save: $(cat "$dir/out")"
+  [ -z "$(ls -A "$dir/tmp")" ] || fail "files left in the temporary directory: $(ls -A "$dir/tmp")"
+  ;;
+writes_reports_for_ci_for_every_verdict)
+  # --report and --junit for each verdict, read back by Python's json and xml.etree (expat); a report that
+  # cannot be written is exit 2 and leaves nothing behind.
+  check_reports() {
+    python3 - "$dir/r.json" "$dir/r.xml" "$1" <<'PY' || fail "reports for verdict $1: $(cat "$dir/r.json" "$dir/r.xml")"
+import json, sys, xml.etree.ElementTree as ET
+report, junit, verdict = json.load(open(sys.argv[1])), ET.parse(sys.argv[2]).getroot(), sys.argv[3]
+assert report["verdict"] == verdict, report["verdict"]
+assert junit.tag == "testsuites" and len(junit.findall("testsuite/testcase")) == len(report["families"]) == 17
+failures = junit.findall("testsuite/testcase/failure")
+assert len(failures) == (verdict == "does not conform"), failures
+assert (report["counterexample"] is None) == (verdict != "does not conform")
+assert (report["error"] is None) == (verdict != "cannot check")
+PY
+  }
+  run_conform 0 --engine double --cases 170 --seed 2 --report "$dir/r.json" --junit "$dir/r.xml"
+  check_reports conforms
+  run_conform 1 --seed 3 --exec "$naive" --report "$dir/r.json" --junit "$dir/r.xml"
+  check_reports "does not conform"
+  run_conform 2 --cases 5 --timeout 0.2 --exec 'sleep 30' --report "$dir/r.json" --junit "$dir/r.xml"
+  check_reports "cannot check"
+  run_conform 2 --engine double --cases 17 --report "$dir/no/such/r.json"
+  grep -q "^circles conform: --report $dir/no/such/r.json: cannot create " "$dir/err" || fail "$(cat "$dir/err")"
+  [ ! -e "$dir/no" ] || fail "something was written"
+  ;;
 replays_the_committed_corpus_with_each_engine)
   # A copy, so that a failure writes its picture there rather than into the source tree.
   cp -r "$source_dir/tests/corpus/conform" "$dir/corpus"

@@ -1,11 +1,11 @@
 // `circles conform` in process: the comparison and its levels, the verdicts on right and wrong candidates, the
 // shrunk counterexample, rounds of every family and shards, the literal profile, counterexamples saved and
-// replayed (cli/corpus.hpp) and drawn (cli/counterexample_svg.hpp), and candidate programs that crash, hang, or
+// replayed (conform/corpus.hpp) and drawn (pictures/counterexample_svg.hpp), and candidate programs that crash, hang, or
 // answer out of protocol.
-#include "cli/candidate.hpp"
-#include "cli/conform.hpp"
-#include "cli/corpus.hpp"
-#include "cli/counterexample_svg.hpp"
+#include "conform/candidate.hpp"
+#include "conform/conform.hpp"
+#include "conform/corpus.hpp"
+#include "pictures/counterexample_svg.hpp"
 
 #include <gtest/gtest.h>
 
@@ -32,26 +32,20 @@
 #include "impl/rounding.hpp"
 #include "properties/boundaries.hpp"
 #include "spec/oracle.hpp"
+#include "tests/function_candidate.hpp"
 #include "tests/temp_dir.hpp"
 #include "tests/thrown.hpp"
 
-namespace circles::cli {
+namespace circles::conform {
+
+using namespace circles::formats;
 namespace {
 
 using circles::testing::TempDir;
 using circles::testing::thrown;
 using namespace std::chrono_literals;
 
-// An in-process candidate from a step function, for deliberately wrong implementations.
-class FunctionCandidate : public Candidate {
- public:
-  explicit FunctionCandidate(std::function<Circles(const Circles&)> step) : step_(std::move(step)) {}
-  Circles answer(const Circles& world, std::uint64_t) override { return step_(world); }
-  std::string name() const override { return "the function"; }
-
- private:
-  std::function<Circles(const Circles&)> step_;
-};
+using circles::testing::FunctionCandidate;
 
 // The resolved step with the contacts `touches(k, j)` decides: each circle takes the velocity of the least.
 Circles step_with_contacts(const Circles& w, const std::function<bool(std::size_t, std::size_t)>& touches) {
@@ -105,11 +99,19 @@ class StaleContacts : public Candidate {
   std::set<std::pair<std::size_t, std::size_t>> pairs_;
 };
 
-std::string run(Candidate& candidate, ConformOptions options, int& status) {
-  std::ostringstream out;
-  status = conform(candidate, options, out);
-  return out.str();
+// A verdict in a line, for the messages of failed expectations.
+std::string describe(const Verdict& v) {
+  std::string text = std::string(name(v.outcome)) + " after " + std::to_string(v.cases) + " cases";
+  if (!v.error.empty()) text += ": " + v.error;
+  if (v.counterexample) {
+    const Counterexample& c = *v.counterexample;
+    text += ": family " + c.family + ", step " + std::to_string(c.step) + " of " + std::to_string(c.steps) +
+            ", circle " + std::to_string(c.difference.circle) + ", field " + properties::field_name(c.difference.field) +
+            ", " + c.difference.decision + ", replay " + c.replay;
+  }
+  return text;
 }
+
 
 TEST(conform, parses_levels_and_shards_and_refuses_others_with_their_option_named) {
   EXPECT_EQ(parse_level("exact").ulps, 0u);
@@ -163,31 +165,45 @@ TEST(conform, compares_positions_within_the_level_and_decisions_exactly) {
 
 TEST(conform, the_double_engine_conforms_over_chained_steps) {
   EngineCandidate engine_candidate(engine("double"), 1);
-  int status = -1;
-  const std::string report = run(engine_candidate, ConformOptions{{0}, 400, 11, 2, 0, 1, {}}, status);
-  EXPECT_EQ(status, 0) << report;
-  EXPECT_NE(report.find("conforms: 400 cases"), std::string::npos) << report;
-  EXPECT_NE(report.find("2 steps each, level exact, seed 11"), std::string::npos) << report;
+  const Verdict v = check(engine_candidate, Options{{0}, 400, 11, 2, 0, 1, {}});
+  EXPECT_EQ(v.outcome, Outcome::conforms) << describe(v);
+  EXPECT_EQ(v.cases, 400u);
+  EXPECT_EQ(v.options.steps, 2u);
+  EXPECT_EQ(v.options.seed, 11u);
+  EXPECT_FALSE(v.counterexample);
 }
 
 TEST(conform, its_fast_reference_agrees_with_the_oracle_on_the_worlds_it_draws) {
   // conform compares answers with impl::step_all_pairs, not with the oracle itself (50-100 times slower): with
   // the oracle as the candidate, every case must conform, over chained steps too.
   EngineCandidate oracle(engine("oracle"), 1);
-  int status = -1;
-  const std::string report = run(oracle, ConformOptions{{0}, 3000, 21, 2, 0, 1, {}}, status);
-  EXPECT_EQ(status, 0) << report;
+  const Verdict v = check(oracle, Options{{0}, 3000, 21, 2, 0, 1, {}});
+  EXPECT_EQ(v.outcome, Outcome::conforms) << describe(v);
 }
 
 TEST(conform, rejects_a_strict_intersect_with_a_counterexample_shrunk_to_two_tangent_circles) {
   FunctionCandidate wrong(strict_intersect_step);
-  int status = -1;
-  const std::string report = run(wrong, ConformOptions{{0}, 1000, 7, 1, 0, 1, {}}, status);
-  EXPECT_EQ(status, 1) << report;
-  EXPECT_NE(report.find("to 2 circles"), std::string::npos) << report;
-  EXPECT_NE(report.find("which decision: intersect (3): circle"), std::string::npos) << report;
-  EXPECT_NE(report.find("but kept its own velocity"), std::string::npos) << report;
-  EXPECT_NE(report.find("replay: --seed 7 --case "), std::string::npos) << report;
+  const Verdict v = check(wrong, Options{{0}, 1000, 7, 1, 0, 1, {}});
+  ASSERT_EQ(v.outcome, Outcome::does_not_conform) << describe(v);
+  const Counterexample& c = *v.counterexample;
+  EXPECT_EQ(c.input.size(), 2u);
+  EXPECT_EQ(c.shrink_path.front().size(), c.circles_before);
+  EXPECT_EQ(c.shrink_path.back(), c.input);  // one step: the world asked is the shrunk w_0
+  EXPECT_TRUE(c.difference.decision.starts_with("intersect (3): circle")) << c.difference.decision;
+  EXPECT_TRUE(c.difference.decision.ends_with("but kept its own velocity")) << c.difference.decision;
+  ASSERT_TRUE(c.case_index);
+  EXPECT_EQ(c.replay, "--seed 7 --case " + std::to_string(*c.case_index) + " --level exact");
+  EXPECT_EQ(c.expected, spec::resolved_step_rounded(c.input));
+  EXPECT_EQ(c.actual, strict_intersect_step(c.input));
+  // The counterexample is attached to its family, whose status is failed.
+  std::size_t with_counterexample = 0;
+  for (const FamilyResult& f : v.families)
+    if (f.has_counterexample) {
+      ++with_counterexample;
+      EXPECT_EQ(properties::name(f.family), c.family);
+      EXPECT_EQ(f.status, FamilyStatus::failed);
+    }
+  EXPECT_EQ(with_counterexample, 1u);
 }
 
 // The tangent-after-step family's circles become tangent in w_1, so its tangency is decided at the second step:
@@ -195,32 +211,27 @@ TEST(conform, rejects_a_strict_intersect_with_a_counterexample_shrunk_to_two_tan
 // is caught at the default budget, in that family.
 TEST(conform, chains_the_tangent_after_step_family_to_the_step_that_decides_its_tangency) {
   StaleContacts stale;
-  int status = -1;
-  ConformOptions defaults;  // 1000 cases, one step, level exact, resolved profile
+  Options defaults;  // 1000 cases, one step, level exact, resolved profile
   defaults.seed = 5;
-  const std::string report = run(stale, defaults, status);
-  EXPECT_EQ(status, 1) << report;
-  EXPECT_NE(report.find("(family tangent-after-step)"), std::string::npos) << report;
-  EXPECT_NE(report.find("  step 2 of 2, circle "), std::string::npos) << report;
-  EXPECT_NE(report.find("which decision: intersect (3): circle"), std::string::npos) << report;
-  EXPECT_NE(report.find("but kept its own velocity"), std::string::npos) << report;
-  EXPECT_NE(report.find("the world asked (the candidate's own last answer)"), std::string::npos) << report;
+  const Verdict v = check(stale, defaults);
+  ASSERT_EQ(v.outcome, Outcome::does_not_conform) << describe(v);
+  const Counterexample& c = *v.counterexample;
+  EXPECT_EQ(c.family, "tangent-after-step");
+  EXPECT_EQ(c.step, 2u);
+  EXPECT_EQ(c.steps, 2u);
+  EXPECT_TRUE(c.difference.decision.starts_with("intersect (3): circle")) << c.difference.decision;
+  EXPECT_TRUE(c.difference.decision.ends_with("but kept its own velocity")) << c.difference.decision;
+  EXPECT_NE(c.input, c.shrink_path.back());  // the world asked is the candidate's own first answer
   // Its first steps are right: the cases of every other family, chained one step, pass.
   const auto families = properties::families(Profile::resolved);
   const std::uint64_t F = families.size();
-  ConformOptions one_case = defaults;
-  for (std::uint64_t c = 0; c < 10 * F; ++c) {
-    if (families[c % F] == properties::Family::tangent_after_step) continue;
-    one_case.only_case = c;
-    const std::string one = run(stale, one_case, status);
-    EXPECT_EQ(status, 0) << one;
+  Options one_case = defaults;
+  for (std::uint64_t k = 0; k < 10 * F; ++k) {
+    if (families[k % F] == properties::Family::tangent_after_step) continue;
+    one_case.only_case = k;
+    const Verdict one = check(stale, one_case);
+    EXPECT_EQ(one.outcome, Outcome::conforms) << describe(one);
   }
-  // A run that passes says how far the family was chained.
-  EngineCandidate double_engine(engine("double"), 1);
-  EXPECT_NE(run(double_engine, defaults, status)
-                .find(", 1 step each (tangent-after-step 2: chained to the step that decides its boundary), level exact"),
-            std::string::npos);
-  EXPECT_EQ(status, 0);
 }
 
 TEST(conform, shards_take_whole_rounds_of_every_family_without_overlap) {
@@ -228,41 +239,39 @@ TEST(conform, shards_take_whole_rounds_of_every_family_without_overlap) {
   // families of the resolved profile, 100 cases are rounds 0 … 4 (17 each) and 15 cases of round 5: shard
   // 0/2 asks rounds 0, 2 and 4, shard 1/2 rounds 1, 3 and the partial 5.
   ASSERT_EQ(properties::families(Profile::resolved).size(), 17u);
-  int status = -1;
   std::uint64_t asked = 0;
   FunctionCandidate counting([&](const Circles& w) {
     ++asked;
     return spec::resolved_step_rounded(w);
   });
-  const std::string first_report = run(counting, ConformOptions{{0}, 100, 3, 1, 0, 2, {}}, status);
+  const Verdict first_verdict = check(counting, Options{{0}, 100, 3, 1, 0, 2, {}});
   const std::uint64_t first = asked;
-  run(counting, ConformOptions{{0}, 100, 3, 1, 1, 2, {}}, status);
+  const Verdict second_verdict = check(counting, Options{{0}, 100, 3, 1, 1, 2, {}});
+  EXPECT_EQ(first_verdict.cases + second_verdict.cases, 100u);
   // One request per case, and a second for each case of tangent-after-step (family 11, chained two steps):
   // 3 of them in each shard.
   EXPECT_EQ(first, 51u + 3);
   EXPECT_EQ(asked, 100u + 6);
   // Each shard saw every family: three cases of each in shard 0.
-  EXPECT_NE(first_report.find("lattice 3, random-doubles 3, tangency 3,"), std::string::npos) << first_report;
+  for (const FamilyResult& f : first_verdict.families) EXPECT_EQ(f.checked, 3u) << properties::name(f.family);
 }
 
 TEST(conform, refuses_a_run_too_short_to_reach_every_family) {
   EngineCandidate engine_candidate(engine("double"), 1);
-  std::ostringstream out;
-  const auto e = thrown<ConformError>([&] { conform(engine_candidate, ConformOptions{{0}, 10, 3, 1, 0, 1, {}}, out); });
-  ASSERT_TRUE(e);
-  EXPECT_EQ(std::string(e->what()),
+  const Verdict short_run = check(engine_candidate, Options{{0}, 10, 3, 1, 0, 1, {}});
+  EXPECT_EQ(short_run.outcome, Outcome::cannot_check);
+  EXPECT_EQ(short_run.error,
             "no case of the family mutual-contacts was checked: each round of 17 cases draws every family of the resolved "
             "profile once, and this run checked 10; raise --cases to at least 17");
-  const auto sharded =
-      thrown<ConformError>([&] { conform(engine_candidate, ConformOptions{{0}, 20, 3, 1, 1, 2, {}}, out); });
-  ASSERT_TRUE(sharded);
-  EXPECT_EQ(std::string(sharded->what()),
+  const Verdict sharded = check(engine_candidate, Options{{0}, 20, 3, 1, 1, 2, {}});
+  EXPECT_EQ(sharded.outcome, Outcome::cannot_check);
+  EXPECT_EQ(sharded.error,
             "no case of the family ulp-nudge was checked: each round of 17 cases draws every family of the resolved "
             "profile once, and this run (shard 1/2) checked 3; raise --cases to at least 34");
   // Replaying one case is not a run over the families; nor need --cases reach it.
-  ConformOptions one{{0}, 1000, 3, 1, 0, 1, 1500};
-  int status = -1;
-  EXPECT_NE(run(engine_candidate, one, status).find("conforms: 1 cases"), std::string::npos);
+  const Verdict one = check(engine_candidate, Options{{0}, 1000, 3, 1, 0, 1, 1500});
+  EXPECT_EQ(one.outcome, Outcome::conforms) << describe(one);
+  EXPECT_EQ(one.cases, 1u);
 }
 
 // ── The literal profile ────────────────────────────────────────────────────────────────────────────────
@@ -281,16 +290,15 @@ TEST(conform, the_literal_profile_asks_only_worlds_inside_the_seeds_domain_and_t
         }
     return spec::resolved_step_rounded(w);  // inside the domain, the resolved step is the literal one
   });
-  int status = -1;
-  ConformOptions options{{0}, 1500, 5, 3, 0, 1, {}};
+  Options options{{0}, 1500, 5, 3, 0, 1, {}};
   options.profile = Profile::literal;
-  const std::string report = run(literal, options, status);
-  EXPECT_EQ(status, 0) << report;
+  const Verdict v = check(literal, options);
+  EXPECT_EQ(v.outcome, Outcome::conforms) << describe(v);
   EXPECT_EQ(outside, 0u);
   EXPECT_GT(with_contacts, asked / 3);  // not only worlds where nothing meets
-  EXPECT_NE(report.find("literal profile"), std::string::npos) << report;
+  EXPECT_EQ(v.families.size(), properties::families(Profile::literal).size());
   EngineCandidate double_engine(engine("double"), 1);
-  EXPECT_EQ(conform(double_engine, options, std::cout), 0);
+  EXPECT_EQ(check(double_engine, options).outcome, Outcome::conforms);
 }
 
 TEST(conform, the_literal_profile_refuses_a_step_that_ignores_the_product_order) {
@@ -314,14 +322,12 @@ TEST(conform, the_literal_profile_refuses_a_step_that_ignores_the_product_order)
     }
     return out;
   });
-  int status = -1;
-  ConformOptions options{{0}, 1000, 5, 1, 0, 1, {}};
+  Options options{{0}, 1000, 5, 1, 0, 1, {}};
   options.profile = Profile::literal;
-  const std::string report = run(greatest, options, status);
-  EXPECT_EQ(status, 1) << report;
-  EXPECT_NE(report.find("the choice of e (8)"), std::string::npos) << report;
-  EXPECT_NE(report.find("expected (the literal oracle's step, rounded to nearest)"), std::string::npos) << report;
-  EXPECT_NE(report.find("--profile literal"), std::string::npos) << report;
+  const Verdict v = check(greatest, options);
+  ASSERT_EQ(v.outcome, Outcome::does_not_conform) << describe(v);
+  EXPECT_TRUE(v.counterexample->difference.decision.starts_with("the choice of e (8)"));
+  EXPECT_TRUE(v.counterexample->replay.ends_with(" --profile literal")) << v.counterexample->replay;
 }
 
 // ── Counterexamples as files: --save and --svg ─────────────────────────────────────────────────────────
@@ -334,21 +340,17 @@ std::vector<std::filesystem::path> files_in(const std::filesystem::path& dir, co
   return files;
 }
 
-TEST(conform, saves_a_counterexample_with_its_picture_and_replays_it_first_on_every_run) {
+TEST(conform, saves_a_counterexample_and_replays_it_first_on_every_run) {
   const TempDir dir;
   const std::filesystem::path corpus = dir.path / "corpus";  // --save makes it
   FunctionCandidate wrong(strict_intersect_step);
-  ConformOptions options{{0}, 1000, 7, 1, 0, 1, {}};
+  Options options{{0}, 1000, 7, 1, 0, 1, {}};
   options.save = corpus;
-  int status = -1;
-  const std::string first = run(wrong, options, status);
-  EXPECT_EQ(status, 1) << first;
+  const Verdict first = check(wrong, options);
+  ASSERT_EQ(first.outcome, Outcome::does_not_conform) << describe(first);
   const auto saved = files_in(corpus, ".json");
-  ASSERT_EQ(saved.size(), 1u) << first;
-  EXPECT_NE(first.find("saved: " + saved[0].string()), std::string::npos) << first;
-  const std::filesystem::path picture = saved[0].parent_path() / (saved[0].stem().string() + ".svg");
-  EXPECT_TRUE(std::filesystem::exists(picture));
-  EXPECT_NE(first.find("picture: " + picture.string()), std::string::npos) << first;
+  ASSERT_EQ(saved.size(), 1u) << describe(first);
+  EXPECT_EQ(first.counterexample->saved, saved[0]);
 
   // The file holds the shrunk world, which the wrong step still gets wrong and the right one right.
   const auto stored = load_corpus(corpus);
@@ -365,21 +367,20 @@ TEST(conform, saves_a_counterexample_with_its_picture_and_replays_it_first_on_ev
 
   // The next run replays it before any generated case, even with no cases at all.
   options.cases = 0;
-  const std::string second = run(wrong, options, status);
-  EXPECT_EQ(status, 1) << second;
-  EXPECT_NE(second.find("counterexample: stored in " + saved[0].string() + ", replayed first (found as case " +
-                        std::to_string(*c.case_index) + " of seed 7, family "),
-            std::string::npos)
-      << second;
-  EXPECT_NE(second.find("replay: --save " + corpus.string()), std::string::npos) << second;
+  const Verdict second = check(wrong, options);
+  ASSERT_EQ(second.outcome, Outcome::does_not_conform) << describe(second);
+  EXPECT_EQ(second.counterexample->stored, saved[0]);
+  EXPECT_EQ(second.counterexample->found_case, c.case_index);
+  EXPECT_EQ(second.counterexample->found_seed, 7u);
+  EXPECT_EQ(second.counterexample->family, c.family);
+  EXPECT_EQ(second.counterexample->replay, "--save " + corpus.string() + " --level exact (the corpus is replayed first)");
   EXPECT_EQ(files_in(corpus, ".json").size(), 1u);  // not saved twice
 
   // A right step passes it, and says so.
   FunctionCandidate right([](const Circles& w) { return spec::resolved_step_rounded(w); });
-  const std::string third = run(right, options, status);
-  EXPECT_EQ(status, 0) << third;
-  EXPECT_NE(third.find("corpus: 1 stored counterexample replayed from " + corpus.string()), std::string::npos)
-      << third;
+  const Verdict third = check(right, options);
+  EXPECT_EQ(third.outcome, Outcome::conforms) << describe(third);
+  EXPECT_EQ(third.replayed, 1u);
 }
 
 TEST(conform, round_trips_a_counterexample_through_its_file_bit_for_bit) {
@@ -450,24 +451,27 @@ TEST(conform, refuses_corpus_files_it_cannot_replay_naming_the_file_and_the_plac
             "F.json: key \"world\": circle 0, field vx: expected a number, found \"1\"");
   EXPECT_EQ(error(head + R"("world": [[0, 0, 0, 0, 1e999]]})"),
             "F.json: malformed JSON: [json.exception.out_of_range.406] number overflow parsing '1e999'");
-  // A number means the double nearest to it (cli/json_number.hpp): 2^53 + 1 is 2^53.
+  // A number means the double nearest to it (formats/json_number.hpp): 2^53 + 1 is 2^53.
   EXPECT_EQ(from_json(head + R"("world": [[9007199254740993, 0, 0, 0, 1]]})", "F.json").world[0][0], 0x1p53);
   EXPECT_EQ(error(head + R"("world": [], "seed": -1})"), "F.json: key \"seed\": expected an integer >= 0, found -1");
 
   // In a directory, the file is named by its path, and a run with --save stops before any case.
   const TempDir corpus;
   corpus.write("bad.json", "{");
-  EngineCandidate engine_candidate(engine("double"), 1);
-  ConformOptions options{{0}, 100, 1, 1, 0, 1, {}};
+  std::uint64_t asked = 0;
+  FunctionCandidate counting([&](const Circles& w) {
+    ++asked;
+    return w;
+  });
+  Options options{{0}, 100, 1, 1, 0, 1, {}};
   options.save = corpus.path;
-  std::ostringstream out;
-  const auto e = thrown<ConformError>([&] { conform(engine_candidate, options, out); });
-  ASSERT_TRUE(e);
-  EXPECT_TRUE(std::string(e->what()).starts_with("--save: " + (corpus.path / "bad.json").string() + ": malformed JSON"))
-      << e->what();
+  const Verdict v = check(counting, options);
+  EXPECT_EQ(v.outcome, Outcome::cannot_check);
+  EXPECT_TRUE(v.error.starts_with("--save: " + (corpus.path / "bad.json").string() + ": malformed JSON")) << v.error;
+  EXPECT_EQ(asked, 0u);
 }
 
-TEST(conform, refuses_a_save_directory_or_picture_it_cannot_write_before_any_case) {
+TEST(conform, refuses_a_save_directory_it_cannot_use_before_any_case) {
   const TempDir dir;
   dir.write("file", "x");
   std::uint64_t asked = 0;
@@ -475,72 +479,13 @@ TEST(conform, refuses_a_save_directory_or_picture_it_cannot_write_before_any_cas
     ++asked;
     return w;
   });
-  std::ostringstream out;
-  ConformOptions options{{0}, 100, 1, 1, 0, 1, {}};
+  Options options{{0}, 100, 1, 1, 0, 1, {}};
   options.save = dir.path / "file";
-  auto e = thrown<ConformError>([&] { conform(counting, options, out); });
+  const auto e = thrown<ConformError>([&] { check(counting, options); });
   ASSERT_TRUE(e);
   EXPECT_EQ(std::string(e->what()), "--save: cannot use the directory " + (dir.path / "file").string() + ": " +
                                         std::make_error_code(std::errc::not_a_directory).message());
-  options.save.clear();
-  options.svg = dir.path / "no" / "such" / "picture.svg";
-  e = thrown<ConformError>([&] { conform(counting, options, out); });
-  ASSERT_TRUE(e);
-  EXPECT_EQ(std::string(e->what()), "--svg: cannot write " + options.svg.string() + ": the directory " +
-                                        (dir.path / "no" / "such").string() + " does not exist");
   EXPECT_EQ(asked, 0u);
-}
-
-// Every number in the path data and positions of an SVG document.
-std::vector<double> coordinates_in(const std::string& svg) {
-  std::vector<double> xs;
-  static const std::regex attribute(R"re((?:\sd|\sx|\sy)="([^"]*)")re");
-  static const std::regex number(R"([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?|nan|inf)");
-  for (std::sregex_iterator a(svg.begin(), svg.end(), attribute), end; a != end; ++a) {
-    const std::string text = (*a)[1];
-    for (std::sregex_iterator n(text.begin(), text.end(), number); n != end; ++n) xs.push_back(std::stod(n->str()));
-  }
-  return xs;
-}
-
-TEST(conform, draws_worlds_from_the_subnormals_to_dbl_max_inside_the_picture) {
-  const double tiny = std::numeric_limits<double>::denorm_min();
-  const double huge = std::numeric_limits<double>::max();
-  for (const Circles& w : {Circles{{0, 0, 1, 0, 5 * tiny}, {3 * tiny, 4 * tiny, 0, 0, 0}},
-                           Circles{{-huge, huge, 0, 0, huge}, {huge, -huge, 0, 0, huge}, {0, 0, 0, 0, 0}},
-                           Circles{{1, 1, 0, 0, 0}}}) {
-    CounterexamplePicture picture{w, w, w, 0, Profile::resolved, {"a line of text"}};
-    picture.actual[0][0] = std::nextafter(w[0][0], 1.0);
-    const std::string svg = counterexample_svg(picture);
-    EXPECT_TRUE(svg.starts_with("<?xml")) << svg.substr(0, 100);
-    EXPECT_NE(svg.find(R"(width="900pt" height="760pt")"), std::string::npos);
-    const std::vector<double> xs = coordinates_in(svg);
-    EXPECT_GT(xs.size(), 50u);
-    for (const double x : xs) {
-      ASSERT_TRUE(std::isfinite(x)) << x;
-      ASSERT_GE(x, -20) << x;
-      ASSERT_LE(x, 920) << x;
-    }
-  }
-}
-
-TEST(conform, draws_one_line_for_each_contact_and_the_expected_and_answered_positions_dashed) {
-  // Contacts are orange, rgb(95%, 55%, 10%): one line for each touching pair, and one in the legend.
-  const auto contact_lines = [](const Circles& w) {
-    const std::string svg = counterexample_svg({w, w, w, 0, Profile::resolved, {}});
-    std::size_t lines = 0;
-    for (std::size_t at = 0; (at = svg.find("stroke:rgb(95%,55%,10%)", at)) != std::string::npos; ++at) ++lines;
-    return lines;
-  };
-  EXPECT_EQ(contact_lines({{0, 0, 0, 0, 1}, {10, 0, 0, 0, 1}}), 1u);
-  EXPECT_EQ(contact_lines({{0, 0, 0, 0, 1}, {2, 0, 0, 0, 1}}), 2u);  // tangent: (3) holds
-  EXPECT_EQ(contact_lines({{0, 0, 0, 0, 1}, {std::nextafter(2.0, 3.0), 0, 0, 0, 1}}), 1u);
-  EXPECT_EQ(contact_lines({{0, 0, 0, 0, 2}, {1, 0, 0, 0, 2}, {-1, 0, 0, 0, 2}}), 4u);  // three pairs
-  const std::string svg = counterexample_svg({{{0, 0, 60, 0, 1}}, {{1, 0, 60, 0, 1}}, {{2, 0, 60, 0, 1}}, 0,
-                                              Profile::resolved, {}});
-  std::size_t dashed = 0;
-  for (std::size_t at = 0; (at = svg.find("stroke-dasharray", at)) != std::string::npos; ++at) ++dashed;
-  EXPECT_EQ(dashed, 4u);  // expected and answered, in the picture and in the legend
 }
 
 // Programs that break the protocol: each is refused with what it did, and nothing of it outlives the check.
@@ -597,11 +542,62 @@ class CrashesAfterItsFirstWrongAnswer : public FunctionCandidate {
 
 TEST(conform, judges_the_answers_before_a_fault_in_a_batch_and_reports_the_counterexample) {
   CrashesAfterItsFirstWrongAnswer candidate;
-  int status = -1;
-  const std::string report = run(candidate, ConformOptions{}, status);
-  EXPECT_EQ(status, 1) << report;
-  EXPECT_NE(report.find("does not conform"), std::string::npos) << report;
+  const Verdict v = check(candidate, Options{});
+  EXPECT_EQ(v.outcome, Outcome::does_not_conform) << describe(v);
   EXPECT_GE(candidate.crashes, 1);  // the fault happened, inside a batch
+}
+
+// tests/faulty_candidate.cpp MODE, through the program and conform's defaults at seed 1 (a batch of requests at a
+// time, as `circles conform --exec` asks).
+Verdict check_faulty(const std::string& mode) {
+  ProcessCandidate candidate(std::string(CIRCLES_FAULTY_CANDIDATE) + " " + mode, 10s);
+  Options options;
+  options.seed = 1;
+  return check(candidate, options);
+}
+
+// Python's json writes NaN, Infinity and -Infinity for floats that are not finite: each is read as the value it
+// means and judged like any number, a counterexample (exit 1) shrunk to the two circles that make the
+// candidate write it, naming the field, the expected value and the token received.
+TEST(conform, reads_nan_and_infinity_in_an_answer_as_values_and_reports_a_counterexample) {
+  for (const std::string token : {"NaN", "Infinity", "-Infinity"}) {
+    const Verdict v = check_faulty(token);
+    ASSERT_EQ(v.outcome, Outcome::does_not_conform) << token << ": " << describe(v);
+    const Counterexample& c = *v.counterexample;
+    EXPECT_EQ(c.input.size(), 2u) << describe(v);
+    EXPECT_EQ(c.difference.circle, 0u);
+    EXPECT_EQ(properties::field_name(c.difference.field), std::string("px"));
+    EXPECT_EQ(c.difference.expected, c.expected[0][0]);
+    EXPECT_TRUE(std::isfinite(c.difference.expected));
+    EXPECT_EQ(std::isnan(c.difference.actual), token == "NaN");
+    if (token != "NaN") {
+      EXPECT_EQ(c.difference.actual, token == "Infinity" ? INFINITY : -INFINITY);
+    }
+  }
+}
+
+// A program that answers one request wrong and then breaks (a line that is not JSON, or an exit) on the next,
+// inside a batch: the answers to the rest of the batch are still in its pipe when conform reads the fault. The
+// program is started afresh before the next request, so shrinking gets the answers to its own requests, never
+// "answered request 13 with id 6", and the verdict is the shrunk counterexample, exit 1.
+TEST(conform, never_takes_an_answer_for_another_request_after_a_fault_in_a_batch) {
+  for (const std::string mode : {"wrong-then-malformed", "wrong-then-crash"}) {
+    const Verdict v = check_faulty(mode);
+    ASSERT_EQ(v.outcome, Outcome::does_not_conform) << mode << ": " << describe(v);
+    const Counterexample& c = *v.counterexample;
+    EXPECT_EQ(c.input.size(), 2u) << describe(v);
+    EXPECT_GE(c.shrinks(), 1u);
+    EXPECT_EQ(c.difference.circle, 0u);
+    EXPECT_EQ(c.difference.actual, std::nextafter(c.difference.expected, INFINITY));  // the one mistake
+  }
+}
+
+// Unknown keys in an answer are ignored, whatever their values (NaN and a "}" in a string included), for
+// forward compatibility: an exact candidate that adds a timing to each answer conforms.
+TEST(conform, ignores_unknown_keys_in_an_answer) {
+  const Verdict v = check_faulty("extra-key");
+  EXPECT_EQ(v.outcome, Outcome::conforms) << describe(v);
+  EXPECT_EQ(v.cases, 1000u);
 }
 
 TEST(conform, sends_a_program_several_requests_before_reading_their_answers) {
@@ -659,4 +655,4 @@ TEST(conform, leaves_no_process_behind_even_when_the_program_starts_others) {
 }
 
 }  // namespace
-}  // namespace circles::cli
+}  // namespace circles::conform

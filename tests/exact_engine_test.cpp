@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/scene.hpp"
+#include "formats/scene.hpp"
 #include "impl/engine.hpp"
 #include "impl/exact_integer.hpp"
 #include "impl/random_scene.hpp"
@@ -141,7 +141,7 @@ TEST(exact_engine, meets_exactly_at_the_designed_tangency_and_not_one_step_befor
 }
 
 TEST(exact_engine, follows_the_oracle_on_the_bundled_scene_and_runs_it_for_10000_steps) {
-  const spec::Sequence w0 = cli::default_scene().circles;
+  const spec::Sequence w0 = formats::default_scene().circles;
   ExactEngine engine(w0, EngineOptions{.threads = 1});
   BasicEngine<ExactArithmetic> doubles(World(nearest(w0)), EngineOptions{.threads = 1});
   spec::Sequence oracle = w0;

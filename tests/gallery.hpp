@@ -5,7 +5,7 @@
 // protocol, each entry served by tests/gallery_candidate.cpp (one ctest per entry, tests/CMakeLists.txt).
 #pragma once
 
-#include "cli/protocol.hpp"
+#include "formats/protocol.hpp"
 
 #include <string>
 #include <string_view>
@@ -13,7 +13,7 @@
 
 namespace circles::testing {
 
-using cli::Circles;
+using formats::Circles;
 
 struct Mistakes {
   enum class Contact { exact, strict, hypot, small_grid } contact = Contact::exact;

@@ -2,7 +2,7 @@
 // protocol, served as `circles serve` serves an engine, so that `circles conform --exec "gallery_candidate NAME"`
 // checks it as it checks any program. NAME "none" is the correct step. Exits as `circles serve` does, and with 2
 // for a name that is no entry, listing the names.
-#include "cli/serve.hpp"
+#include "conform/serve.hpp"
 #include "tests/gallery.hpp"
 
 #include <cmath>
@@ -18,7 +18,7 @@ using circles::testing::Circles;
 Circles finite(Circles w) {
   for (std::size_t k = 0; k < w.size(); ++k)
     for (const circles::spec::Field f : {circles::spec::Field::px, circles::spec::Field::py})
-      if (!std::isfinite(w[k][static_cast<std::size_t>(f)])) throw circles::cli::StepOverflow(1, k, f);
+      if (!std::isfinite(w[k][static_cast<std::size_t>(f)])) throw circles::conform::StepOverflow(1, k, f);
   return w;
 }
 
@@ -28,14 +28,14 @@ int main(int argc, char** argv) {
   const circles::testing::GalleryEntry* entry = argc == 2 ? circles::testing::find_entry(argv[1]) : nullptr;
   if (!entry) {
     std::cerr << "gallery_candidate: "
-              << (argc == 2 ? "no gallery entry is called " + circles::cli::in_quotes(argv[1])
+              << (argc == 2 ? "no gallery entry is called " + circles::formats::in_quotes(argv[1])
                             : "expected one argument, the name of a gallery entry")
               << "; the entries are: " << circles::testing::entry_names() << "\n";
     return 2;
   }
   std::ios::sync_with_stdio(false);  // like `circles serve`: only the C++ streams are used
   const circles::testing::Mistakes mistakes = entry->mistakes;
-  return circles::cli::serve(
+  return circles::conform::serve(
       [mistakes](const Circles& w) { return finite(circles::testing::mistaken_step(w, mistakes)); }, std::cin,
       std::cout, std::cerr);
 }

@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/scene.hpp"
+#include "formats/scene.hpp"
 #include "spec/circle.hpp"
 #include "spec/oracle.hpp"
 
@@ -88,7 +88,7 @@ TEST(golden, the_default_scene_follows_the_rounded_oracle_in_every_build_and_thr
   constexpr int kSteps = 600;
   constexpr std::uint64_t kGolden = 0xe273883c7cb230da;
   Circles w;
-  for (const spec::Circle& c : cli::default_scene().circles) w.push_back(spec::nearest_doubles(c));
+  for (const spec::Circle& c : formats::default_scene().circles) w.push_back(spec::nearest_doubles(c));
   StateHash oracle;
   oracle.add(w);
   Circles now = w;

@@ -2,8 +2,8 @@
 // the typed error (SceneError, ProtocolError: exit code 2 in `circles`) and a message naming the file or line,
 // the place and the reason, never a crash. The cases tests/scene_test.cpp and tests/protocol_test.cpp already
 // check are not repeated here; fuzz/ throws random bytes at the same readers (docs/hardening.md).
-#include "cli/protocol.hpp"
-#include "cli/scene.hpp"
+#include "formats/protocol.hpp"
+#include "formats/scene.hpp"
 #include "tests/temp_dir.hpp"
 #include "tests/thrown.hpp"
 
@@ -14,7 +14,7 @@
 #include <string>
 #include <string_view>
 
-namespace circles::cli {
+namespace circles::formats {
 namespace {
 
 using circles::testing::thrown;
@@ -159,4 +159,4 @@ TEST(protocol_line, refuses_top_level_nesting_at_its_first_bracket) {
 }
 
 }  // namespace
-}  // namespace circles::cli
+}  // namespace circles::formats

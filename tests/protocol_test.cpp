@@ -1,8 +1,8 @@
-// The step protocol's lines (cli/protocol.hpp): every double written reads back as itself, bit for bit, in
+// The step protocol's lines (formats/protocol.hpp): every double written reads back as itself, bit for bit, in
 // our reader and in a lenient one; every malformed line is refused with the message that names its fault.
-#include "cli/protocol.hpp"
+#include "formats/protocol.hpp"
 
-#include "cli/json_number.hpp"
+#include "formats/json_number.hpp"
 #include "properties/generators.hpp"
 #include "tests/thrown.hpp"
 
@@ -18,7 +18,7 @@
 #include <limits>
 #include <string>
 
-namespace circles::cli {
+namespace circles::formats {
 namespace {
 
 using circles::testing::thrown;
@@ -43,8 +43,8 @@ std::string written(double x) {
 }
 
 // The message of the ProtocolError that parse_line throws for `text` as line 4.
-std::string refusal(std::string_view text, std::string_view counter = kId) {
-  const auto e = thrown<ProtocolError>([&] { parse_line(text, 4, counter); });
+std::string refusal(std::string_view text, std::string_view counter = kId, Reading reading = Reading::strict) {
+  const auto e = thrown<ProtocolError>([&] { parse_line(text, 4, counter, reading); });
   return e ? e->what() : "";
 }
 
@@ -152,13 +152,57 @@ TEST(protocol, rejects_a_line_with_a_wrong_id) {
   EXPECT_EQ(refusal(R"({"id": 1e999, "circles": []})"), R"(line 4: "id": 1e999 is beyond the double range)");
 }
 
-TEST(protocol, rejects_nan_and_infinity_tokens_which_json_does_not_have) {
+TEST(protocol, rejects_nan_and_infinity_tokens_in_requests_and_traces_which_json_does_not_have) {
   EXPECT_EQ(refusal(R"({"id":1,"circles":[[NaN,0,0,0,1]]})"),
             R"(line 4: malformed JSON at column 21: syntax error while parsing value - invalid literal; )"
             R"(last read: '"circles":[[N')");
   EXPECT_EQ(refusal(R"({"id":1,"circles":[[0,-Infinity,0,0,1]]})"),
             R"(line 4: malformed JSON at column 24: syntax error while parsing value - invalid number; )"
             R"(expected digit after '-'; last read: '-I')");
+}
+
+// Reading an answer (Reading::answer): the tokens NaN, Infinity and -Infinity are the values they mean, and a
+// number beyond the double range its nearest double, infinity, so that conform judges them against the expected
+// answer; no field is checked against C (a negative radius is a value to judge too).
+TEST(protocol, reads_nan_infinity_and_numbers_beyond_the_range_in_an_answer_as_values) {
+  const Line line = parse_line(R"({"id":1,"circles":[[NaN,Infinity,-Infinity,1e400,-1],[-1e99999,0.1,NaN,2,3]]})", 4,
+                               kId, Reading::answer);
+  ASSERT_EQ(line.circles.size(), 2u);
+  EXPECT_TRUE(std::isnan(line.circles[0][0]));
+  EXPECT_EQ(line.circles[0][1], INFINITY);
+  EXPECT_EQ(line.circles[0][2], -INFINITY);
+  EXPECT_EQ(line.circles[0][3], INFINITY);
+  EXPECT_EQ(line.circles[0][4], -1.0);
+  EXPECT_EQ(line.circles[1][0], -INFINITY);
+  EXPECT_EQ(bits(line.circles[1][1]), bits(0.1));  // the nearest double, as ever
+  EXPECT_TRUE(std::isnan(line.circles[1][2]));
+  EXPECT_EQ(line.circles[1][4], 3.0);
+}
+
+// Unknown keys in an answer are ignored with their values, however nested, whatever they hold (strings with
+// brackets, NaN); `id` and "circles" must still be there exactly once, and a token out of place is named.
+TEST(protocol, ignores_unknown_keys_in_an_answer_but_not_a_missing_or_repeated_id_or_circles) {
+  const auto answer = [](std::string_view text) { return parse_line(text, 4, kId, Reading::answer); };
+  const Line line = answer(R"({"ms": 0.1, "id": 9, "x": {"a": [1, [NaN, {"]": "}"}]], "b": null}, )"
+                           R"("circles": [[1, 2, 3, 4, 5]], "y": "[[", "z": [true, 1e999]})");
+  EXPECT_EQ(line.number, 9u);
+  EXPECT_EQ(line.circles, (Circles{{1, 2, 3, 4, 5}}));
+  const auto answer_refusal = [](std::string_view text) { return refusal(text, kId, Reading::answer); };
+  EXPECT_EQ(answer_refusal(R"({"ms": 0.1, "circles": []})"), R"(line 4: missing key "id")");
+  EXPECT_EQ(answer_refusal(R"({"id": 1, "ms": [1]})"), R"(line 4: missing key "circles")");
+  EXPECT_EQ(answer_refusal(R"({"id": 1, "ms": 0, "id": 1, "circles": []})"), R"(line 4: duplicate key "id")");
+  EXPECT_EQ(answer_refusal(R"({"id": 1, "circles": [], "circles": []})"), R"(line 4: duplicate key "circles")");
+  EXPECT_EQ(answer_refusal(R"({"id": NaN, "circles": []})"),
+            R"(line 4: "id": expected an integer from 0 to 18446744073709551615, found NaN)");
+  EXPECT_EQ(answer_refusal(R"({"id": 1, "circles": [[0, 0, 0, 0, 1, -Infinity]]})"),
+            "line 4: circle 0: expected 5 numbers [px, py, vx, vy, r], found more");
+  // Only the three tokens: columns in messages are those of the line as written.
+  EXPECT_EQ(answer_refusal(R"({"id":1,"circles":[[nan,0,0,0,1]]})"),
+            R"(line 4: malformed JSON at column 22: syntax error while parsing value - invalid literal; )"
+            R"(last read: '"circles":[[na')");
+  EXPECT_EQ(answer_refusal(R"({"id":1,"circles":[[-NaN,0,0,0,1]]})"),
+            R"(line 4: malformed JSON at column 22: syntax error while parsing value - invalid number; )"
+            R"(expected digit after '-'; last read: '-N')");
 }
 
 TEST(protocol, rejects_a_number_beyond_the_double_range_naming_its_circle_and_field) {
@@ -230,4 +274,4 @@ TEST(protocol, rejects_malformed_json_trailing_text_and_an_empty_line) {
 }
 
 }  // namespace
-}  // namespace circles::cli
+}  // namespace circles::formats

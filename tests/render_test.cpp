@@ -1,8 +1,8 @@
-// Rendering r and the pictures of `circles run` (cli/render.hpp, cli/video.hpp): where circles land in the
+// Rendering r and the pictures of `circles run` (pictures/render.hpp, pictures/video.hpp): where circles land in the
 // frame and in which colour, --fit, the frames --render writes, and --video with and without ffmpeg.
-#include "cli/render.hpp"
+#include "pictures/render.hpp"
 #include "cli/run.hpp"
-#include "cli/video.hpp"
+#include "pictures/video.hpp"
 
 #include "impl/predicate.hpp"
 #include "tests/temp_dir.hpp"
@@ -25,11 +25,17 @@
 #include <string>
 #include <vector>
 
-namespace circles::cli {
+namespace circles::pictures {
 
 std::ostream& operator<<(std::ostream& out, const Colour& c) {
   return out << "rgb(" << int(c.r) << ", " << int(c.g) << ", " << int(c.b) << ")";
 }
+
+}  // namespace circles::pictures
+
+namespace circles::cli {
+
+using namespace circles::pictures;
 
 namespace {
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The scene schema (docs/scene.schema.json) and the scene loader (cli/scene.cpp) accept the same documents.
+"""The scene schema (docs/scene.schema.json) and the scene loader (formats/scene.cpp) accept the same documents.
 
     scene_schema_test.py PATH/TO/circles REPOSITORY bundled     every scenes/*.json: valid and loaded
     scene_schema_test.py PATH/TO/circles REPOSITORY agreement   the examples below: both say what each one says

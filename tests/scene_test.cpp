@@ -1,7 +1,7 @@
-// Scenes read by `circles` (cli/scene.hpp, docs/scenes.md): both circle forms, the optional name and steps,
+// Scenes read by `circles` (formats/scene.hpp, docs/scenes.md): both circle forms, the optional name and steps,
 // every number as its nearest double, and a message naming the place for everything else. The hostile inputs
 // (depth, NUL bytes, invalid UTF-8, files that are not files) are in tests/hostile_input_test.cpp.
-#include "cli/scene.hpp"
+#include "formats/scene.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@
 #include <limits>
 #include <sstream>
 
-namespace circles::cli {
+namespace circles::formats {
 namespace {
 
 std::string error_of(std::string_view text) {
@@ -55,7 +55,7 @@ TEST(parse_scene, reads_a_circle_object_as_the_compact_circle_of_the_same_number
   EXPECT_EQ(s.circle_names, (std::vector<std::optional<std::string>>{"left", std::nullopt, std::nullopt}));
 }
 
-// Every number token means the double nearest to its decimal value, ties to even (cli/json_number.hpp), the
+// Every number token means the double nearest to its decimal value, ties to even (formats/json_number.hpp), the
 // reading of JavaScript's JSON.parse and of strtod. The ties check the direction of rounding, which a
 // truncating reader (2^53 + 3 -> 2^53 + 2) or one that rounds twice (through an 80-bit long double,
 // 2^64 + 2049 -> 2^64 + 2048 -> 2^64) gets wrong.
@@ -228,4 +228,4 @@ TEST(random_world, is_the_benchmarks_scene_and_refuses_a_bad_coverage) {
 }
 
 }  // namespace
-}  // namespace circles::cli
+}  // namespace circles::formats

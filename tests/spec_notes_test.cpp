@@ -1,8 +1,8 @@
 // One test per note of docs/spec-notes.md: each shows the defect, ambiguity or surprise on its minimal
 // exact example world and pins the chosen resolution, so it fails if the documented behaviour changes.
 // The note's heading anchor is the test's name.
-#include "cli/render.hpp"
-#include "cli/video.hpp"
+#include "pictures/render.hpp"
+#include "pictures/video.hpp"
 #include "impl/predicate.hpp"
 #include "spec/oracle.hpp"
 
@@ -180,13 +180,13 @@ TEST(spec_notes, infinite_worlds) {
 
 // render-function: the seed names r: P(C) → M_1280×720 and says nothing more; these are the project's choices.
 TEST(spec_notes, render_function) {
-  EXPECT_EQ(cli::kFrameWidth, 1280);
-  EXPECT_EQ(cli::kFrameHeight, 720);
-  cli::Frame frame;
-  frame.draw({{300.5, 100.5, 0, 0, 3}}, cli::View::pixels());
-  EXPECT_EQ(frame.pixel(300, 100), cli::fill_colour(0));  // one unit a pixel, from the top-left corner
-  EXPECT_EQ(frame.pixel(300, 719 - 100), cli::kBackground);  // y points down: not the mirrored row
-  EXPECT_EQ(Q(cli::kVideoFrameRate) * dt, 1);               // a world every Δt: the seed's own pace
+  EXPECT_EQ(pictures::kFrameWidth, 1280);
+  EXPECT_EQ(pictures::kFrameHeight, 720);
+  pictures::Frame frame;
+  frame.draw({{300.5, 100.5, 0, 0, 3}}, pictures::View::pixels());
+  EXPECT_EQ(frame.pixel(300, 100), pictures::fill_colour(0));  // one unit a pixel, from the top-left corner
+  EXPECT_EQ(frame.pixel(300, 719 - 100), pictures::kBackground);  // y points down: not the mirrored row
+  EXPECT_EQ(Q(pictures::kVideoFrameRate) * dt, 1);               // a world every Δt: the seed's own pace
 }
 
 // overflow: the seed is over ℝ; doubles end at DBL_MAX.

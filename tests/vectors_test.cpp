@@ -3,10 +3,10 @@
 // new velocity, the hashes against FNV-1a written out here byte by byte, the hex forms against strtod, the
 // features against impl::intersect_exact. examples/python/check_vectors.py checks the same file in another
 // language (tests/vectors_end_to_end.sh).
-#include "cli/conform.hpp"
-#include "cli/json_number.hpp"
+#include "conform/conform.hpp"
+#include "formats/json_number.hpp"
 #include "cli/run.hpp"
-#include "cli/scene.hpp"
+#include "formats/scene.hpp"
 #include "cli/vectors.hpp"
 #include "impl/engine.hpp"
 #include "impl/predicate.hpp"

@@ -16,8 +16,14 @@ def touches(a, b):
     return s * s >= dx * dx + dy * dy
 
 
-def step(world):
-    """(1): every circle from the old world; the least contact is lexicographic on (px, py, vx, vy, r), then index."""
+def nearest(p, v):
+    """(5): p + v/60, exactly, rounded once to the nearest double."""
+    return float(p + v / 60)
+
+
+def step(world, advance=nearest):
+    """(1): every circle from the old world; the least contact is lexicographic on (px, py, vx, vy, r), then index.
+    advance(p, v) gives each new position from the exact p and v."""
     w = [[Fraction(x) for x in circle] for circle in world]
     out = []
     for k, c in enumerate(w):
@@ -26,10 +32,16 @@ def step(world):
         if contacts:
             least = min(contacts, key=lambda j: (*w[j], j))
             vx, vy = w[least][2], w[least][3]
-        out.append([float(c[0] + vx / 60), float(c[1] + vy / 60), float(vx), float(vy), float(c[4])])
+        out.append([advance(c[0], vx), advance(c[1], vy), float(vx), float(vy), float(c[4])])
     return out
 
 
-for line in sys.stdin:
-    request = json.loads(line)
-    print(json.dumps({"id": request["id"], "circles": step(request["circles"])}), flush=True)
+def serve(step_function):
+    """The step protocol: one answer line per request line, flushed."""
+    for line in sys.stdin:
+        request = json.loads(line)
+        print(json.dumps({"id": request["id"], "circles": step_function(request["circles"])}), flush=True)
+
+
+if __name__ == "__main__":
+    serve(step)

@@ -1,0 +1,173 @@
+#include "cli/conform_report.hpp"
+
+#include "formats/json_number.hpp"
+#include "conform/corpus.hpp"  // write_atomically
+#include "pictures/counterexample_svg.hpp"
+
+#include <span>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace circles::cli {
+namespace {
+
+using conform::Counterexample;
+using conform::Outcome;
+using conform::Verdict;
+using formats::Circles;
+using properties::Profile;
+namespace json_number = formats::json_number;
+
+void print_world(std::ostream& out, const std::string& title, const Circles& w) {
+  out << "  " << title << ":\n";
+  for (std::size_t k = 0; k < w.size(); ++k) {
+    std::string line = "    #" + std::to_string(k) + " [";
+    for (std::size_t f = 0; f < 5; ++f) {
+      if (f) line += ", ";
+      json_number::append_any(line, w[k][f]);
+    }
+    out << line << "]\n";
+  }
+}
+
+// Where it came from: "case 9 of seed 3 (family tangency), shrunk from 4 to 2 circles in 7 steps", or "stored in
+// DIR/F.json, replayed first (found as case 9 of seed 3, family tangency)".
+std::string found(const Verdict& v, const Counterexample& c) {
+  if (!c.stored.empty()) {
+    std::string text = "stored in " + c.stored.string() + ", replayed first";
+    if (c.found_seed && c.found_case)
+      text += " (found as case " + std::to_string(*c.found_case) + " of seed " + std::to_string(*c.found_seed) +
+              (c.family.empty() ? "" : ", family " + c.family) + ")";
+    return text;
+  }
+  return "case " + std::to_string(c.case_index.value_or(0)) + " of seed " + std::to_string(v.options.seed) +
+         " (family " + c.family + "), shrunk from " + std::to_string(c.circles_before) + " to " +
+         std::to_string(c.shrink_path.back().size()) + " circles in " + std::to_string(c.shrinks()) + " steps";
+}
+
+// The lines that open the report of a counterexample, and its picture's legend.
+std::vector<std::string> head_lines(const Verdict& v) {
+  const Counterexample& c = *v.counterexample;
+  const properties::Difference& d = c.difference;
+  return {
+      "circles conform: " + v.candidate + " does not conform (level " + v.options.level.text() + ", " +
+          properties::name(v.options.profile) + " profile)",
+      "counterexample: " + found(v, c),
+      "  step " + std::to_string(c.step) + " of " + std::to_string(c.steps) + ", circle " + std::to_string(d.circle) +
+          ", field " + properties::field_name(d.field) + ": expected " + json_number::decimal_and_hex(d.expected) +
+          ", got " + json_number::decimal_and_hex(d.actual),
+      "  which decision: " + d.decision,
+  };
+}
+
+// The head lines and the three worlds.
+void print_worlds(const Verdict& v, std::ostream& out) {
+  const Counterexample& c = *v.counterexample;
+  for (const std::string& line : head_lines(v)) out << line << "\n";
+  print_world(out, c.step == 1 ? "the world asked (w_0)" : "the world asked (the candidate's own last answer)", c.input);
+  print_world(out,
+              v.options.profile == Profile::literal ? "expected (the literal oracle's step, rounded to nearest)"
+                                                    : "expected (the correctly rounded oracle step)",
+              c.expected);
+  print_world(out, "answered", c.actual);
+}
+
+void print_counterexample(const Verdict& v, const std::filesystem::path& svg, std::ostream& out) {
+  const Counterexample& c = *v.counterexample;
+  const properties::Difference& d = c.difference;
+  print_worlds(v, out);
+  if (!c.saved.empty()) out << "saved: " << c.saved.string() << "\n";
+  if (!c.not_saved.empty()) out << "saved: not saved: " << c.not_saved << "\n";
+  if (const std::filesystem::path file = picture_path(v, svg); !file.empty()) {
+    try {
+      conform::write_atomically(file, pictures::counterexample_svg({c.input, c.expected, c.actual, d.circle,
+                                                                    v.options.profile, head_lines(v)}));
+      out << "picture: " << file.string() << "\n";
+    } catch (const std::exception& e) {
+      out << "picture: not drawn: " << e.what() << "\n";
+    }
+  }
+  out << "replay: " << c.replay << "\n";
+}
+
+// "lattice 59, random-doubles 59, …", wrapped before 110 columns, each line indented.
+void print_families(std::ostream& out, std::span<const conform::FamilyResult> families) {
+  std::string line = "  cases checked per family:";
+  for (std::size_t f = 0; f < families.size(); ++f) {
+    const std::string item = std::string(" ") + properties::name(families[f].family) + " " +
+                             std::to_string(families[f].checked) + (f + 1 < families.size() ? "," : "");
+    if (line.size() + item.size() > 110) {
+      out << line << "\n";
+      line = "   ";
+    }
+    line += item;
+  }
+  out << line << "\n";
+}
+
+void print_conforms(const Verdict& v, std::ostream& out) {
+  const conform::Options& o = v.options;
+  out << "circles conform: " << v.candidate << " conforms: " << v.cases << " cases";
+  if (v.skipped) out << " (" << v.skipped << " skipped: their next world leaves the double range)";
+  out << ", " << o.steps << " step" << (o.steps == 1 ? "" : "s") << " each";
+  std::string longer;  // "tangent-after-step 2": the families chained further, to the step that decides them
+  for (const conform::FamilyResult& f : v.families)
+    if (f.checked > 0 && properties::steps_to_decide(f.family) > o.steps)
+      longer += (longer.empty() ? "" : ", ") + std::string(properties::name(f.family)) + " " +
+                std::to_string(properties::steps_to_decide(f.family));
+  if (!longer.empty()) out << " (" << longer << ": chained to the step that decides its boundary)";
+  out << ", level " << o.level.text() << ", seed " << o.seed << ", " << properties::name(o.profile) << " profile";
+  if (o.shards > 1) out << ", shard " << o.shard << "/" << o.shards;
+  out << "\n";
+  if (v.cases > 0) print_families(out, v.families);
+  if (v.cut_short)
+    out << "  " << v.cut_short << " chains ended early: their next world leaves the double range"
+        << (o.profile == Profile::literal ? " or the literal domain" : "") << "\n";
+  if (!o.save.empty()) {
+    out << "  corpus: " << v.replayed << " stored counterexample" << (v.replayed == 1 ? "" : "s") << " replayed from "
+        << o.save.string();
+    if (v.not_replayed)
+      out << " (" << v.not_replayed << " not: no expected answer"
+          << (o.profile == Profile::literal ? ", outside the literal domain or beyond the double range"
+                                            : ", beyond the double range")
+          << ")";
+    out << "\n";
+  }
+}
+
+}  // namespace
+
+std::string counterexample_text(const Verdict& verdict) {
+  if (!verdict.counterexample) return "";
+  std::ostringstream out;
+  print_worlds(verdict, out);
+  out << "replay: " << verdict.counterexample->replay << "\n";
+  return out.str();
+}
+
+std::filesystem::path picture_path(const Verdict& verdict, const std::filesystem::path& svg) {
+  if (!svg.empty()) return svg;
+  if (verdict.options.save.empty() || !verdict.counterexample) return {};
+  const Counterexample& c = *verdict.counterexample;
+  const std::filesystem::path& beside = !c.saved.empty() ? c.saved : c.stored;
+  if (beside.empty()) return {};
+  return verdict.options.save / (beside.stem().string() + ".svg");
+}
+
+int print_verdict(const Verdict& verdict, const std::filesystem::path& svg, std::ostream& out, std::ostream& err) {
+  switch (verdict.outcome) {
+    case Outcome::conforms:
+      print_conforms(verdict, out);
+      return 0;
+    case Outcome::does_not_conform:
+      print_counterexample(verdict, svg, out);
+      return 1;
+    case Outcome::cannot_check:
+      break;
+  }
+  err << "circles conform: " << verdict.error << "\n";
+  return 2;
+}
+
+}  // namespace circles::cli

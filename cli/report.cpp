@@ -1,0 +1,287 @@
+#include "cli/report.hpp"
+
+#include "formats/json_number.hpp"
+#include "formats/output_file.hpp"
+#include "formats/protocol.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+#include <limits>
+#include <map>
+#include <set>
+
+namespace circles::cli {
+namespace {
+
+using conform::Counterexample;
+using conform::FamilyResult;
+using conform::Verdict;
+using formats::Circles;
+namespace json_number = formats::json_number;
+
+constexpr const char* kFormat = "circles-conform-report/1";
+
+std::string json_string(const std::string& s) {
+  return nlohmann::json(s).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+void append_world(std::string& out, const Circles& w) {
+  out += '[';
+  for (std::size_t k = 0; k < w.size(); ++k) {
+    out += k ? ",[" : "[";
+    for (std::size_t f = 0; f < 5; ++f) {
+      if (f) out += ',';
+      json_number::append_or_string(out, w[k][f]);
+    }
+    out += ']';
+  }
+  out += ']';
+}
+
+std::string shard_text(const conform::Options& o) { return std::to_string(o.shard) + "/" + std::to_string(o.shards); }
+
+std::string counterexample_json(const Counterexample& c, const std::string& text) {
+  const properties::Difference& d = c.difference;
+  std::string out = "{\"family\": " + json_string(c.family) + ", \"case\": " +
+                    (c.case_index ? std::to_string(*c.case_index) : "null") +
+                    ", \"stored\": " + (c.stored.empty() ? "null" : json_string(c.stored.string())) +
+                    ", \"step\": " + std::to_string(c.step) + ", \"steps\": " + std::to_string(c.steps) +
+                    ",\n    \"world\": ";
+  append_world(out, c.input);
+  out += ",\n    \"expected\": ";
+  append_world(out, c.expected);
+  out += ",\n    \"received\": ";
+  append_world(out, c.actual);
+  out += ",\n    \"difference\": {\"circle\": " + std::to_string(d.circle) + ", \"field\": " +
+         json_string(properties::field_name(d.field)) + ", \"expected\": ";
+  json_number::append_or_string(out, d.expected);
+  out += ", \"received\": ";
+  json_number::append_or_string(out, d.actual);
+  out += ", \"decision\": " + json_string(d.decision) + "},\n    \"shrink_path\": [";
+  for (std::size_t k = 0; k < c.shrink_path.size(); ++k) {
+    if (k) out += ", ";
+    append_world(out, c.shrink_path[k]);
+  }
+  out += "],\n    \"replay\": " + json_string(c.replay) + ",\n    \"text\": " + json_string(text) + "}";
+  return out;
+}
+
+// XML text: the five special characters escaped, and the bytes XML 1.0 cannot hold (control characters but
+// tab, newline and carriage return) as U+FFFD. Other bytes pass as they are (UTF-8 in, UTF-8 out).
+std::string xml(const std::string& s) {
+  std::string out;
+  for (const char c : s) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      case '\'': out += "&apos;"; break;
+      default:
+        if (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n' && c != '\r') out += "\xEF\xBF\xBD";
+        else out += c;
+    }
+  }
+  return out;
+}
+
+std::string seconds(double s) {
+  std::string text;
+  json_number::append(text, std::max(0.0, s));
+  return text;
+}
+
+}  // namespace
+
+std::string json_report(const Verdict& v, const std::string& text) {
+  const conform::Options& o = v.options;
+  std::string out = std::string("{\n  \"format\": \"") + kFormat + "\",\n  \"verdict\": " + json_string(name(v.outcome)) +
+                    ",\n  \"error\": " + (v.error.empty() ? "null" : json_string(v.error)) +
+                    ",\n  \"candidate\": " + json_string(v.candidate) + ",\n  \"seed\": " + std::to_string(o.seed) +
+                    ", \"shard\": " + json_string(shard_text(o)) + ", \"level\": " + json_string(o.level.text()) +
+                    ", \"profile\": " + json_string(properties::name(o.profile)) +
+                    ", \"steps\": " + std::to_string(o.steps) + ",\n  \"cases\": " + std::to_string(v.cases) +
+                    ", \"skipped\": " + std::to_string(v.skipped) + ", \"cut_short\": " + std::to_string(v.cut_short) +
+                    ", \"replayed\": " + std::to_string(v.replayed) + ",\n  \"families\": {";
+  std::string status = "{";
+  for (std::size_t f = 0; f < v.families.size(); ++f) {
+    const std::string family = json_string(properties::name(v.families[f].family));
+    out += (f ? ", " : "") + family + ": " + std::to_string(v.families[f].checked);
+    status += (f ? ", " : "") + family + ": " + json_string(name(v.families[f].status));
+  }
+  out += "},\n  \"family_status\": " + status + "},\n  \"counterexample\": " +
+         (v.counterexample ? counterexample_json(*v.counterexample, text) : "null") +
+         ",\n  \"elapsed_seconds\": " + seconds(v.elapsed.count()) + "\n}\n";
+  return out;
+}
+
+std::string junit_report(const Verdict& v, const std::string& text) {
+  std::size_t failures = 0, errors = 0, skipped = 0;
+  std::string cases;
+  for (const FamilyResult& f : v.families) {
+    const std::string family = properties::name(f.family);
+    cases += "    <testcase classname=\"circles.conform\" name=\"" + xml(family) + "\" time=\"0\">\n";
+    if (f.has_counterexample && v.counterexample) {
+      ++failures;
+      const properties::Difference& d = v.counterexample->difference;
+      const std::string message = "step " + std::to_string(v.counterexample->step) + " of " +
+                                  std::to_string(v.counterexample->steps) + ", circle " + std::to_string(d.circle) +
+                                  ", field " + properties::field_name(d.field) + ": expected " +
+                                  json_number::decimal_and_hex(d.expected) + ", got " +
+                                  json_number::decimal_and_hex(d.actual);
+      cases += "      <failure type=\"does not conform\" message=\"" + xml(message) + "\">" + xml(text) + "</failure>\n";
+    } else if (v.outcome == conform::Outcome::cannot_check && f.checked == 0) {
+      ++errors;
+      cases += "      <error type=\"cannot check\" message=\"" + xml(v.error) + "\">" + xml(v.error) + "</error>\n";
+    } else if (f.status == conform::FamilyStatus::not_reached) {
+      ++skipped;
+      cases += "      <skipped message=\"not reached: the run stopped at its counterexample\"/>\n";
+    }
+    cases += "      <system-out>" + std::to_string(f.checked) + " cases checked</system-out>\n    </testcase>\n";
+  }
+  const conform::Options& o = v.options;
+  const std::string counts = "tests=\"" + std::to_string(v.families.size()) + "\" failures=\"" + std::to_string(failures) +
+                             "\" errors=\"" + std::to_string(errors) + "\" skipped=\"" + std::to_string(skipped) +
+                             "\" time=\"" + seconds(v.elapsed.count()) + "\"";
+  return "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"circles conform\" " + counts + ">\n" +
+         "  <testsuite name=\"" + xml("circles conform: " + v.candidate) + "\" " + counts + ">\n    <properties>\n" +
+         "      <property name=\"verdict\" value=\"" + xml(name(v.outcome)) + "\"/>\n" +
+         "      <property name=\"seed\" value=\"" + std::to_string(o.seed) + "\"/>\n" +
+         "      <property name=\"shard\" value=\"" + shard_text(o) + "\"/>\n" +
+         "      <property name=\"level\" value=\"" + xml(o.level.text()) + "\"/>\n" +
+         "      <property name=\"profile\" value=\"" + properties::name(o.profile) + "\"/>\n" +
+         "      <property name=\"cases\" value=\"" + std::to_string(v.cases) + "\"/>\n    </properties>\n" + cases +
+         "  </testsuite>\n</testsuites>\n";
+}
+
+std::string merge_reports(const std::vector<std::string>& texts, const std::vector<std::string>& names) {
+  if (texts.empty()) throw ReportError("report merge: no reports to merge");
+  std::vector<nlohmann::json> reports;
+  for (std::size_t k = 0; k < texts.size(); ++k) {
+    nlohmann::json r;
+    try {
+      r = nlohmann::json::parse(texts[k]);
+    } catch (const nlohmann::json::exception& e) {
+      throw ReportError(names[k] + ": malformed JSON: " + e.what());
+    }
+    if (!r.is_object() || r.value("format", "") != kFormat)
+      throw ReportError(names[k] + ": not a report of circles conform (\"format\": \"" + kFormat + "\")");
+    reports.push_back(std::move(r));
+  }
+  const nlohmann::json& first = reports.front();
+  const auto shard_of = [&](std::size_t k) {
+    const std::string s = reports[k].value("shard", "");
+    const auto slash = s.find('/');
+    try {
+      if (slash == std::string::npos || s.find(',') != std::string::npos) throw std::invalid_argument(s);
+      return std::pair{std::stoull(s.substr(0, slash)), std::stoull(s.substr(slash + 1))};
+    } catch (const std::exception&) {
+      throw ReportError(names[k] + ": \"shard\": expected i/n, found \"" + s + "\" (a merged report is not merged again)");
+    }
+  };
+  std::set<unsigned long long> shards;
+  const unsigned long long n = shard_of(0).second;
+  for (std::size_t k = 0; k < reports.size(); ++k) {
+    for (const char* key : {"candidate", "seed", "level", "profile", "steps"})
+      if (reports[k][key] != first[key])
+        throw ReportError(names[k] + ": \"" + key + "\" is " + reports[k][key].dump() + ", but " + names[0] + "'s is " +
+                          first[key].dump() + ": only the shards of one run merge");
+    const auto [i, count] = shard_of(k);
+    if (count != n) throw ReportError(names[k] + ": shard " + std::to_string(i) + "/" + std::to_string(count) +
+                                      " is not one of " + std::to_string(n) + " shards, as " + names[0] + "'s is");
+    if (!shards.insert(i).second) throw ReportError(names[k] + ": shard " + std::to_string(i) + "/" + std::to_string(n) + " twice");
+  }
+
+  nlohmann::ordered_json out;
+  std::string verdict = "conforms";
+  nlohmann::json error = nullptr, counterexample = nullptr;
+  std::uint64_t cases = 0, skipped = 0, cut_short = 0, replayed = 0;
+  double elapsed = 0;
+  std::vector<std::pair<std::string, std::uint64_t>> families;  // in the first report's order
+  std::map<std::string, std::string> status;
+  const auto rank = [](const nlohmann::json& c) {  // a stored counterexample (no case) was replayed first
+    return c["case"].is_null() ? -1.0 : c["case"].get<double>();
+  };
+  for (const nlohmann::json& r : reports) {
+    cases += r.value("cases", 0ull);
+    skipped += r.value("skipped", 0ull);
+    cut_short += r.value("cut_short", 0ull);
+    replayed = std::max<std::uint64_t>(replayed, r.value("replayed", 0ull));  // each shard replays the same corpus
+    elapsed += r.value("elapsed_seconds", 0.0);
+    if (r["verdict"] == "cannot check" && error.is_null()) error = r["error"];
+    if (!r["counterexample"].is_null() && (counterexample.is_null() || rank(r["counterexample"]) < rank(counterexample)))
+      counterexample = r["counterexample"];
+    for (const auto& [family, count] : r["families"].items()) {
+      auto at = std::find_if(families.begin(), families.end(), [&](const auto& p) { return p.first == family; });
+      if (at == families.end()) families.emplace_back(family, count.get<std::uint64_t>());
+      else at->second += count.get<std::uint64_t>();
+    }
+    for (const auto& [family, s] : r["family_status"].items()) {
+      std::string& merged = status[family];
+      const std::string one = s.get<std::string>();
+      if (one == "failed" || merged == "failed") merged = "failed";
+      else if (one == "passed" || merged == "passed") merged = "passed";
+      else merged = one;
+    }
+  }
+  if (!error.is_null()) verdict = "cannot check";
+  else if (!counterexample.is_null()) verdict = "does not conform";
+  std::string shard_list;
+  for (const unsigned long long i : shards) shard_list += (shard_list.empty() ? "" : ",") + std::to_string(i);
+  out["format"] = kFormat;
+  out["verdict"] = verdict;
+  out["error"] = error;
+  for (const char* key : {"candidate", "seed"}) out[key] = first[key];
+  out["shard"] = shard_list + "/" + std::to_string(n);
+  for (const char* key : {"level", "profile", "steps"}) out[key] = first[key];
+  out["cases"] = cases;
+  out["skipped"] = skipped;
+  out["cut_short"] = cut_short;
+  out["replayed"] = replayed;
+  nlohmann::ordered_json by_family = nlohmann::ordered_json::object(), by_status = nlohmann::ordered_json::object();
+  for (const auto& [family, count] : families) {
+    by_family[family] = count;
+    by_status[family] = status[family];
+  }
+  out["families"] = by_family;
+  out["family_status"] = by_status;
+  out["counterexample"] = counterexample;
+  out["elapsed_seconds"] = elapsed;
+  return out.dump(2) + "\n";
+}
+
+int merge_command(const std::string& out, const std::vector<std::string>& reports, std::ostream& err) {
+  std::vector<std::string> texts;
+  for (const std::string& file : reports) {
+    std::ifstream in(file, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (!in) {
+      err << "circles report merge: " << file << ": cannot read it\n";
+      return 2;
+    }
+    texts.push_back(text.str());
+  }
+  try {
+    const std::string merged = merge_reports(texts, reports);
+    write_report(out, "report", merged);
+    const std::string verdict = nlohmann::json::parse(merged)["verdict"];
+    return verdict == "conforms" ? 0 : verdict == "does not conform" ? 1 : 2;
+  } catch (const ReportError& e) {
+    err << "circles report merge: " << e.what() << "\n";
+  } catch (const formats::OutputError& e) {
+    err << "circles report merge: " << e.what() << "\n";
+  }
+  return 2;
+}
+
+void write_report(const std::string& path, const std::string& what, const std::string& text) {
+  formats::OutputFile file(path, what + " " + path);
+  file.write(text);
+  file.commit();
+}
+
+}  // namespace circles::cli

@@ -1,0 +1,62 @@
+// Reports of `circles conform` for CI: the verdict as JSON (--report FILE.json), as JUnit XML (--junit FILE.xml),
+// and `circles report merge OUT.json IN.json...`, which combines the reports of the shards of one run.
+//
+// The JSON report, one object (format "circles-conform-report/1"):
+//   {"format": "circles-conform-report/1",
+//    "verdict": "conforms" | "does not conform" | "cannot check",
+//    "error": null | "why it cannot check",
+//    "candidate": "the program `python3 step.py`",
+//    "seed": 3, "shard": "0/1", "level": "exact", "profile": "resolved", "steps": 1,
+//    "cases": 1000, "skipped": 0, "cut_short": 0, "replayed": 0,
+//    "families": {"lattice": 59, ...},                  cases checked per family, in the profile's order
+//    "family_status": {"lattice": "passed", ...},       "passed", "failed", "not reached" (issue 14 adds more)
+//    "counterexample": null | {"family": "ulp-nudge", "case": 3 | null (a stored file), "stored": null | "F.json",
+//        "step": 1, "steps": 1, "world": [[...]], "expected": [[...]], "received": [[...]],
+//        "difference": {"circle": 0, "field": "px", "expected": 0.5, "received": "Infinity", "decision": "..."},
+//        "shrink_path": [[[...]], ...], "replay": "--seed 3 --case 3 --level exact", "text": "the printed report"},
+//    "elapsed_seconds": 0.43}
+// Numbers follow formats/json_number.hpp; a received number that is not finite is the string "NaN", "Infinity"
+// or "-Infinity". A merged report's "shard" lists the shards it merged, "0,1,2,3/4".
+//
+// The JUnit XML: one <testsuite> of one <testcase> per family, with a <failure> (its message the line that
+// names the field, its text the printed counterexample) in the counterexample's family, <skipped> in a family
+// not reached, and an <error> in each family not checked when the run cannot check.
+//
+// Every file is written to a temporary name beside it and renamed (formats/output_file.hpp): whole or not at all.
+#pragma once
+
+#include "conform/conform.hpp"
+
+#include <ostream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace circles::cli {
+
+// A report that cannot be read or merged; what() names the file and why.
+class ReportError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// `text`: the counterexample as `circles conform` prints it (cli/conform_report.hpp), kept in both reports.
+std::string json_report(const conform::Verdict& verdict, const std::string& text);
+std::string junit_report(const conform::Verdict& verdict, const std::string& text);
+
+// The reports of shards of one run (the same candidate, seed, level, profile, steps and shard count, each
+// shard once), as one: cases, skipped and per-family counts add up; the verdict is "cannot check" if any is,
+// else "does not conform" if any has a counterexample, the one of the lowest case index (a stored
+// counterexample, replayed before any case, lowest of all); a family failed if it failed in any shard, passed
+// if it passed in one. Throws ReportError. `names` name the texts in messages.
+std::string merge_reports(const std::vector<std::string>& texts, const std::vector<std::string>& names);
+
+// `circles report merge OUT IN...`: merges the reports IN into OUT. Returns the exit status of the merged
+// verdict (0 conforms, 1 does not conform, 2 cannot check), or 2 with the reason on `err` for a report that
+// cannot be read or merged, or an OUT that cannot be written (left as it was).
+int merge_command(const std::string& out, const std::vector<std::string>& reports, std::ostream& err);
+
+// Writes `text` to `path` whole or not at all. Throws formats::OutputError.
+void write_report(const std::string& path, const std::string& what, const std::string& text);
+
+}  // namespace circles::cli

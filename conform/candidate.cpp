@@ -1,0 +1,288 @@
+#include "conform/candidate.hpp"
+
+#include "formats/json_number.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <csignal>
+#include <cstring>
+#include <string_view>
+#include <thread>
+
+#include <fcntl.h>
+#include <poll.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+extern char** environ;
+
+namespace circles::conform {
+
+namespace json_number = formats::json_number;
+
+Circles EngineCandidate::answer(const Circles& world, std::uint64_t id) {
+  try {
+    return step_once(engine_, world, threads_);
+  } catch (const StepOverflow& e) {
+    throw BrokenCandidate("request " + std::to_string(id) + ": " + e.what());
+  }
+}
+
+std::string EngineCandidate::name() const { return "the " + std::string(engine_.name) + " engine"; }
+
+namespace {
+
+std::string system_error(const char* what) { return std::string(what) + ": " + std::strerror(errno); }
+
+// "10 s", "0.25 s": the deadline in the shortest decimal form.
+std::string seconds(std::chrono::milliseconds deadline) {
+  std::string text;
+  json_number::append(text, std::chrono::duration<double>(deadline).count());
+  if (text.ends_with(".0")) text.resize(text.size() - 2);
+  return text + " s";
+}
+
+}  // namespace
+
+ProcessCandidate::ProcessCandidate(std::string command, std::chrono::milliseconds deadline)
+    : command_(std::move(command)), deadline_(deadline) {
+  std::signal(SIGPIPE, SIG_IGN);
+  start();
+}
+
+void ProcessCandidate::start() {
+  int in[2], out[2];
+  if (pipe2(in, O_CLOEXEC) != 0) throw BrokenCandidate(system_error("cannot create a pipe"));
+  if (pipe2(out, O_CLOEXEC) != 0) {
+    close(in[0]);
+    close(in[1]);
+    throw BrokenCandidate(system_error("cannot create a pipe"));
+  }
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_adddup2(&actions, in[0], STDIN_FILENO);
+  posix_spawn_file_actions_adddup2(&actions, out[1], STDOUT_FILENO);
+  posix_spawnattr_t attributes;
+  posix_spawnattr_init(&attributes);
+  // A process group of its own (killed whole at the end), and SIGPIPE back to its default in the program.
+  sigset_t defaults;
+  sigemptyset(&defaults);
+  sigaddset(&defaults, SIGPIPE);
+  posix_spawnattr_setsigdefault(&attributes, &defaults);
+  posix_spawnattr_setpgroup(&attributes, 0);
+  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGDEF);
+  std::string shell = "/bin/sh", dash_c = "-c";
+  char* argv[] = {shell.data(), dash_c.data(), command_.data(), nullptr};
+  const int spawned = posix_spawn(&pid_, "/bin/sh", &actions, &attributes, argv, environ);
+  posix_spawn_file_actions_destroy(&actions);
+  posix_spawnattr_destroy(&attributes);
+  close(in[0]);
+  close(out[1]);
+  to_child_ = in[1];
+  from_child_ = out[0];
+  if (spawned != 0) {
+    pid_ = -1;
+    errno = spawned;
+    throw BrokenCandidate(system_error(("cannot start " + name()).c_str()));
+  }
+}
+
+ProcessCandidate::~ProcessCandidate() { stop(); }
+
+void ProcessCandidate::stop() noexcept {
+  kill_group();
+  if (to_child_ >= 0) close(to_child_);
+  if (from_child_ >= 0) close(from_child_);
+  to_child_ = from_child_ = -1;
+}
+
+void ProcessCandidate::restart() {
+  stop();
+  buffer_.clear();
+  status_.clear();
+  unanswered_ = 0;
+  ++restarts_;
+  start();
+}
+
+void ProcessCandidate::kill_group() noexcept {
+  if (pid_ <= 0) return;
+  kill(-pid_, SIGKILL);  // the whole group: the shell and whatever it started
+  int status = 0;
+  while (waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+  }
+  pid_ = -1;
+}
+
+std::string ProcessCandidate::exit_status(bool wait) {
+  if (pid_ <= 0) return status_;
+  int status = 0;
+  pid_t got;
+  do {
+    got = waitpid(pid_, &status, wait ? 0 : WNOHANG);
+  } while (got < 0 && errno == EINTR);
+  if (got != pid_) return "";
+  // The shell has exited; anything it left behind in its group goes too.
+  kill(-pid_, SIGKILL);
+  pid_ = -1;
+  if (WIFEXITED(status)) status_ = "exited with status " + std::to_string(WEXITSTATUS(status));
+  else if (WIFSIGNALED(status)) status_ = "was killed by signal " + std::to_string(WTERMSIG(status));
+  else status_ = "stopped";
+  return status_;
+}
+
+std::string ProcessCandidate::read_line(std::uint64_t id) {
+  const auto give_up = std::chrono::steady_clock::now() + deadline_;
+  for (;;) {
+    if (const auto newline = buffer_.find('\n'); newline != std::string::npos) {
+      std::string line = buffer_.substr(0, newline);
+      buffer_.erase(0, newline + 1);
+      return line;
+    }
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(give_up - std::chrono::steady_clock::now());
+    if (left.count() <= 0) {
+      kill_group();
+      throw BrokenCandidate(name() + " gave no answer to request " + std::to_string(id) + " within " +
+                            seconds(deadline_) + " (it was stopped)");
+    }
+    pollfd ready{from_child_, POLLIN, 0};
+    const int polled = poll(&ready, 1, static_cast<int>(std::min<long long>(left.count(), 1000)));
+    if (polled < 0 && errno != EINTR) throw BrokenCandidate(system_error("poll"));
+    if (polled <= 0) continue;
+    char chunk[65536];
+    const ssize_t got = read(from_child_, chunk, sizeof chunk);
+    if (got < 0 && errno == EINTR) continue;
+    if (got < 0) throw BrokenCandidate(system_error("cannot read the candidate's answer"));
+    if (got == 0) {
+      const std::string status = exit_status(true);
+      throw BrokenCandidate(name() + " " + status + " before answering request " + std::to_string(id) +
+                            (buffer_.empty() ? "" : " (it wrote a line without a newline: \"" + buffer_.substr(0, 80) + "\")"));
+    }
+    buffer_.append(chunk, static_cast<std::size_t>(got));
+  }
+}
+
+void ProcessCandidate::write_requests(std::string_view lines, std::span<const std::size_t> ends,
+                                      std::uint64_t first_id) {
+  const std::size_t total = lines.size();
+  while (!lines.empty()) {
+    const ssize_t wrote = write(to_child_, lines.data(), lines.size());
+    if (wrote < 0 && errno == EINTR) continue;
+    if (wrote < 0 && errno != EPIPE) throw BrokenCandidate(system_error("cannot write to the candidate"));
+    if (wrote < 0) {
+      // Its input is closed: most likely it exited (then say how, as when its output ends), else it closed it.
+      // The request named is the one being written: the first not wholly written.
+      const std::size_t at = total - lines.size();
+      const std::uint64_t id = first_id + static_cast<std::uint64_t>(
+                                              std::upper_bound(ends.begin(), ends.end(), at) - ends.begin());
+      const auto give_up = std::chrono::steady_clock::now() + deadline_;
+      std::string status;
+      while ((status = exit_status(false)).empty() && std::chrono::steady_clock::now() < give_up)
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+      if (status.empty()) throw BrokenCandidate(name() + " closed its input at request " + std::to_string(id));
+      throw BrokenCandidate(name() + " " + status + " before answering request " + std::to_string(id));
+    }
+    lines.remove_prefix(static_cast<std::size_t>(wrote));
+  }
+}
+
+Circles ProcessCandidate::read_answer(const Circles& world, std::uint64_t id) {
+  const std::string text = read_line(id);
+  ++lines_;
+  Line line;
+  try {
+    line = parse_line(text, lines_, kId, Reading::answer);
+  } catch (const ProtocolError& e) {
+    throw BrokenCandidate(name() + " wrote a malformed answer to request " + std::to_string(id) + ": " + e.what());
+  }
+  if (line.number != id)
+    throw BrokenCandidate(name() + " answered request " + std::to_string(id) + " with id " + std::to_string(line.number));
+  if (line.circles.size() != world.size())
+    throw BrokenCandidate(name() + " answered request " + std::to_string(id) + " (" + std::to_string(world.size()) +
+                          " circles) with " + std::to_string(line.circles.size()) + " circles");
+  return std::move(line.circles);
+}
+
+std::vector<Circles> Answers::all() && {
+  if (broken) throw *broken;
+  return std::move(answers);
+}
+
+Answers Candidate::answer_all(std::span<const Circles> worlds, std::uint64_t first_id) {
+  Answers read;
+  read.answers.reserve(worlds.size());
+  try {
+    for (const Circles& world : worlds) read.answers.push_back(answer(world, first_id++));
+  } catch (const BrokenCandidate& e) {
+    read.broken = e;
+  }
+  return read;
+}
+
+Answers ProcessCandidate::answer_all(std::span<const Circles> worlds, std::uint64_t first_id) {
+  // After a fault, what the program wrote to earlier requests may still be on its way: a fresh program, so that
+  // no answer is ever taken for another request's. Then a program that crashed, hung or broke the protocol
+  // on one world is asked about the next from a clean start (as shrinking asks).
+  if (unanswered_ > 0 || pid_ <= 0) restart();
+  Answers read;
+  read.answers.reserve(worlds.size());
+  try {
+    answer_batches(worlds, first_id, read.answers);
+  } catch (const BrokenCandidate& e) {
+    read.broken = e;
+  }
+  return read;
+}
+
+void ProcessCandidate::answer_batches(std::span<const Circles> worlds, std::uint64_t first_id,
+                                      std::vector<Circles>& answers) {
+  std::string lines;
+  std::vector<std::size_t> ends;  // the offset just past each request line in `lines`
+  for (std::size_t first = 0; first < worlds.size();) {
+    // The batch: requests first … last − 1, at least one, at most kBatchBytes unless the first alone is more.
+    lines.clear();
+    ends.clear();
+    std::size_t last = first;
+    for (; last < worlds.size(); ++last) {
+      const std::size_t before = lines.size();
+      lines += format_line(kId, first_id + last, worlds[last]);
+      lines += '\n';
+      if (last > first && lines.size() > kBatchBytes) {
+        lines.resize(before);
+        break;
+      }
+      ends.push_back(lines.size());
+    }
+    unanswered_ += last - first;
+    write_requests(lines, ends, first_id + first);
+    for (; first < last; ++first) {
+      answers.push_back(read_answer(worlds[first], first_id + first));
+      --unanswered_;
+    }
+  }
+}
+
+Circles ProcessCandidate::answer(const Circles& world, std::uint64_t id) {
+  return std::move(answer_all(std::span(&world, 1), id).all().front());
+}
+
+void ProcessCandidate::finish() {
+  if (to_child_ >= 0) {
+    close(to_child_);
+    to_child_ = -1;
+  }
+  const auto give_up = std::chrono::steady_clock::now() + deadline_;
+  std::string status;
+  while ((status = exit_status(false)).empty() && std::chrono::steady_clock::now() < give_up)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  if (status.empty()) {
+    kill_group();
+    throw BrokenCandidate(name() + " did not exit within " + seconds(deadline_) +
+                          " of the end of its input (it was stopped)");
+  }
+  if (status != "exited with status 0")
+    throw BrokenCandidate(name() + " " + status + " at the end of its input (a candidate exits 0)");
+}
+
+}  // namespace circles::conform

@@ -1,0 +1,143 @@
+// A candidate implementation under test: anything that answers the step protocol (docs/protocol.md).
+//
+//   EngineCandidate   one of our engines, in process (conform/engines.hpp).
+//   ProcessCandidate  any program: started once with `/bin/sh -c COMMAND`, fed request lines on its stdin (a
+//                     batch of them at a time, so that a batch shares one round trip through the pipes), read
+//                     one answer line at a time from its stdout, in order, with a deadline per request.
+//                     It runs in a process group of its own, which is killed when the candidate is destroyed,
+//                     so no process outlives the check, whatever the program does. After a fault (a crash, a
+//                     hang, a malformed line, a wrong id or count), the next answer_all starts the program
+//                     afresh, so that no answer it wrote to an earlier request is read as another's.
+#pragma once
+
+#include "conform/engines.hpp"
+#include "formats/protocol.hpp"
+
+#include <chrono>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <sys/types.h>
+
+namespace circles::conform {
+
+using formats::Circles;
+using formats::ProtocolError;
+using formats::Line;
+using formats::Reading;
+using formats::parse_line;
+using formats::format_line;
+using formats::kId;
+
+// The candidate cannot be checked: it crashed, exited, hung past its deadline, wrote a malformed line, a wrong
+// id or a wrong number of circles. what() says which, for which request.
+class BrokenCandidate : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// What Candidate::answer_all read: the answers to its first answers.size() requests, in order, and, when that is
+// not all of them, why the next one has none (what answer() would have thrown for it). A caller judges the
+// answers it has before it reports the candidate broken: a wrong answer ahead of the fault is a counterexample.
+struct Answers {
+  std::vector<Circles> answers;
+  std::optional<BrokenCandidate> broken;
+  // All the answers, or throws `broken`.
+  std::vector<Circles> all() &&;
+};
+
+class Candidate {
+ public:
+  virtual ~Candidate() = default;
+  // The candidate's w_1 for w_0 = `world`, asked as request `id`. Throws BrokenCandidate; an answer that is
+  // only wrong (a different world of the right shape) is returned for the caller to judge.
+  virtual Circles answer(const Circles& world, std::uint64_t id) = 0;
+  // The answers to worlds[k] asked as request first_id + k, in order: what answer() gives for each in turn,
+  // but a candidate may be sent several requests before it answers the first (ProcessCandidate is). Stops at
+  // the first request it cannot answer, with the BrokenCandidate in `broken`; this loop of answer() asks none
+  // after it.
+  virtual Answers answer_all(std::span<const Circles> worlds, std::uint64_t first_id);
+  // The end of the input: the candidate must exit 0 (a process) or simply stop. Throws BrokenCandidate.
+  virtual void finish() {}
+  // "the double engine", "the program `python3 step.py`": for messages.
+  virtual std::string name() const = 0;
+};
+
+class EngineCandidate : public Candidate {
+ public:
+  EngineCandidate(const EngineEntry& engine, unsigned threads) : engine_(engine), threads_(threads) {}
+  // A position beyond the double range is an answer the protocol cannot carry: BrokenCandidate.
+  Circles answer(const Circles& world, std::uint64_t id) override;
+  std::string name() const override;
+
+ private:
+  const EngineEntry& engine_;
+  unsigned threads_;
+};
+
+class ProcessCandidate : public Candidate {
+ public:
+  // Starts the program. Throws BrokenCandidate if it cannot be started. Ignores SIGPIPE in this process from
+  // then on (a write to a candidate that exited must be an error to report, not a signal that kills us).
+  ProcessCandidate(std::string command, std::chrono::milliseconds deadline);
+  ~ProcessCandidate() override;
+  ProcessCandidate(const ProcessCandidate&) = delete;
+  ProcessCandidate& operator=(const ProcessCandidate&) = delete;
+
+  Circles answer(const Circles& world, std::uint64_t id) override;
+  // Writes the requests in batches of at most kBatchBytes (a larger request goes alone) and reads each batch's
+  // answers, each within the deadline of the previous answer (or of the batch's last write). Answers are read
+  // as Reading::answer reads them (formats/protocol.hpp): unknown keys ignored, NaN and infinities as values.
+  // Restarts the program first if it stopped or a request before has no answer read (a fault in a batch).
+  Answers answer_all(std::span<const Circles> worlds, std::uint64_t first_id) override;
+  // Closes the program's stdin and waits, up to the deadline, for it to exit 0.
+  void finish() override;
+  std::string name() const override { return "the program `" + command_ + "`"; }
+  // How many times the program was started afresh after a fault.
+  std::uint64_t restarts() const { return restarts_; }
+
+  // The most bytes of request lines written before their answers are read. Why a bound, and why this one: we
+  // write a whole batch before reading any answer, while the candidate may answer each line as it reads it, so
+  // its answers pile up in its stdout pipe until we read them; if they filled that pipe, it would block
+  // writing, stop reading, and our write would block in turn, for ever. Pipes hold 64 KiB on Linux (pipe(7)).
+  // A batch of at most 16 KiB goes into a stdin pipe that the batches before left empty (the candidate read
+  // each of their requests before answering it), so our write completes even if the candidate reads nothing
+  // meanwhile; and its answers to it, the same worlds in the same format, fill its stdout pipe only if they
+  // are four times as long as the requests. A request longer than the bound goes alone, as it always did.
+  static constexpr std::size_t kBatchBytes = 16 * 1024;
+
+ private:
+  // Starts the program (throws BrokenCandidate if it cannot); stops it, and closes its pipes; both.
+  void start();
+  void stop() noexcept;
+  void restart();
+  // answer_all's work: appends the answer to each of worlds, in batches of at most kBatchBytes; throws
+  // BrokenCandidate at the first request without an answer.
+  void answer_batches(std::span<const Circles> worlds, std::uint64_t first_id, std::vector<Circles>& answers);
+  // The next line the program writes, without its newline, or BrokenCandidate at the deadline or at EOF.
+  std::string read_line(std::uint64_t id);
+  // "exited with status 3", "was killed by signal 11", or "" while it runs.
+  std::string exit_status(bool wait);
+  // Writes all of `lines`, the requests first_id, first_id + 1, … (`ends` holds the offset just past each).
+  void write_requests(std::string_view lines, std::span<const std::size_t> ends, std::uint64_t first_id);
+  // Reads the answer to request `id` about `world` and checks its id and length.
+  Circles read_answer(const Circles& world, std::uint64_t id);
+  void kill_group() noexcept;
+
+  std::string command_;
+  std::chrono::milliseconds deadline_;
+  pid_t pid_ = -1;
+  int to_child_ = -1, from_child_ = -1;
+  std::string buffer_;
+  std::size_t lines_ = 0;
+  std::size_t unanswered_ = 0;  // requests written whose answers were not read
+  std::uint64_t restarts_ = 0;
+  std::string status_;  // set once the program is reaped
+};
+
+}  // namespace circles::conform

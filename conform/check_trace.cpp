@@ -1,0 +1,92 @@
+#include "conform/check_trace.hpp"
+
+#include "conform/engines.hpp"
+#include "impl/engine.hpp"
+#include "impl/state_hash.hpp"
+#include "properties/chain.hpp"
+
+#include <limits>
+#include <memory>
+#include <new>
+#include <stdexcept>
+#include <utility>
+
+namespace circles::conform {
+
+namespace {
+
+// The world the reference expects after `input`, or where its step overflows.
+class Reference {
+ public:
+  Reference(TraceReference kind, const Circles& first) : kind_(kind) {
+    if (kind_ == TraceReference::exact) exact_ = reference(engine("exact"), first);
+  }
+
+  // The expected world after `input` (the trace's world on the line before): nothing, with `overflow` set,
+  // when the reference's step leaves the double range.
+  std::optional<Circles> next(const Circles& input, std::string& overflow) {
+    if (kind_ == TraceReference::rounded) {
+      try {
+        return impl::step_all_pairs(impl::World{input}).circles();
+      } catch (const impl::PositionOverflow& e) {
+        overflow = overflow_reason(e.index, std::string_view(e.field) == "px" ? spec::Field::px : spec::Field::py);
+        return std::nullopt;
+      }
+    }
+    try {
+      exact_->step();  // the exact sequence from the first world, whatever the trace held since
+    } catch (const StepOverflow& e) {
+      overflow = overflow_reason(e.index, e.field);
+      return std::nullopt;
+    }
+    return exact_->circles();
+  }
+
+ private:
+  TraceReference kind_;
+  std::unique_ptr<Stepper> exact_;
+};
+
+}  // namespace
+
+TraceReference trace_reference(std::string_view engine) {
+  if (engine == "double") return TraceReference::rounded;
+  if (engine == "exact") return TraceReference::exact;
+  throw std::invalid_argument("--engine: \"" + std::string(engine) + "\" is not double or exact");
+}
+
+TraceCheck check_trace(TraceReader& reader, TraceReference kind) {
+  TraceCheck check;
+  const std::optional<Line> first = reader.next();  // throws for an empty file
+  std::size_t previous_line = reader.line();
+  const std::size_t first_line = previous_line;
+  check.first_step = check.last_step = first->number;
+  check.circles = first->circles.size();
+  Reference reference(kind, first->circles);
+  impl::StateHash trajectory;
+  trajectory.add(first->circles);
+  // The trace's worlds as a chain's answers (properties/chain.hpp), each against the reference's step of the
+  // world before it (rounded) or the oracle's own sequence (exact); the reader holds every line to the first's
+  // number of circles.
+  properties::Chain chain(first->circles, std::numeric_limits<std::uint64_t>::max());
+  while (std::optional<Line> now = reader.next()) {
+    std::string overflow;
+    std::optional<Circles> expected = reference.next(chain.input(), overflow);
+    if (!expected || !chain.judge(std::move(now->circles), std::move(*expected))) {
+      std::optional<Difference> difference;
+      if (expected) difference = chain.failure()->difference;
+      check.divergence = TraceDivergence{reader.line(), now->number,
+                                         kind == TraceReference::exact ? first_line : previous_line, difference,
+                                         overflow};
+      break;
+    }
+    trajectory.add(chain.input());
+    check.last_step = now->number;
+    previous_line = reader.line();
+  }
+  check.last_hash = impl::state_hash(chain.failure() ? chain.failure()->input : chain.input());
+  check.trajectory_hash = trajectory.value();
+  return check;
+}
+
+}  // namespace circles::conform

@@ -1,0 +1,59 @@
+// The check of `circles check-trace FILE [--engine double|exact]` (printed by cli/check_trace_command.hpp):
+// checks a trace recorded by any implementation
+// (formats/trace_reader.hpp) step by step against the spec, and names the first step, circle and field that differ
+// (docs/vectors.md, "Checking a trace").
+//
+//   double  (the default) each world must be the correctly rounded resolved step of the world on the line
+//           before it: the trace of an engine that steps in doubles, as `circles run --engine double` records.
+//           The reference is impl::step_all_pairs, the exact-decision step conform uses (conform/conform.cpp).
+//   exact   each world must be the oracle's exact sequence from the first world, rounded: the trace of an
+//           engine that keeps the exact state, as `circles run --engine exact` records. The reference is the
+//           oracle itself (cli::reference), O(n²) exact rationals per step.
+// Values are compared by value (−0 == +0), every field exactly: velocities and radii are copies, and each
+// position must be the nearest double.
+#pragma once
+
+#include "conform/conform.hpp"
+#include "formats/trace_reader.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace circles::conform {
+
+using formats::Circles;
+using formats::Line;
+using formats::TraceReader;
+using formats::TraceReadError;
+
+enum class TraceReference { rounded, exact };  // --engine double, --engine exact
+
+// "double" or "exact". Throws std::invalid_argument for any other name.
+TraceReference trace_reference(std::string_view engine);
+
+// The first world that is not the reference's.
+struct TraceDivergence {
+  std::size_t line = 0;      // its line in the file
+  std::uint64_t step = 0;    // its step number
+  std::size_t input_line = 0;  // the line of the world it was stepped from (double) or of the first world (exact)
+  std::optional<Difference> difference;  // the first circle and field that differ, in index and field order
+  std::string overflow;  // instead of a difference: where the reference's step overflows, so no world can follow
+};
+
+struct TraceCheck {
+  std::uint64_t first_step = 0, last_step = 0;  // the steps of the worlds that agree: first_step … last_step
+  std::size_t circles = 0;
+  std::uint64_t last_hash = 0;        // impl::state_hash of world last_step
+  std::uint64_t trajectory_hash = 0;  // impl::StateHash of worlds first_step … last_step
+  std::optional<TraceDivergence> divergence;
+  std::uint64_t steps() const noexcept { return last_step - first_step; }  // steps checked and agreeing
+};
+
+// Reads the trace and checks each world as it comes, stopping at the first divergence (the lines after it are
+// not read). Throws TraceReadError for the first line before it that breaks a rule of the reader.
+TraceCheck check_trace(TraceReader& reader, TraceReference reference);
+
+}  // namespace circles::conform

@@ -1,0 +1,478 @@
+#include "conform/conform.hpp"
+
+#include "conform/corpus.hpp"
+#include "formats/json_number.hpp"
+#include "properties/boundaries.hpp"
+#include "properties/chain.hpp"
+
+#include <rapidcheck.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <string_view>
+#include <tuple>
+#include <span>
+#include <variant>
+#include <vector>
+
+namespace circles::conform {
+namespace {
+
+using properties::NoAnswer;
+
+// Shrinking asks the candidate at most this many worlds: enough for worlds of 8 circles, bounded for a slow one.
+constexpr int kMaxShrinkQueries = 2000;
+// Simplifying the numbers of the shrunk world asks at most this many more: 8 circles × 5 fields × the up to 71
+// values of simpler_values is 2840, but a field stops at its first simpler value that still fails, most at 0 or
+// an integer, and a number that is already simple has few simpler values.
+constexpr int kMaxSimplifyQueries = 1000;
+
+// How simple a number reads, smaller first: zero; then integers before fractions; then fewer significant
+// decimal digits (those of the shortest decimal that reads back as it: 0.5 has 1, 0.0625 3); then fewer bits
+// in its significand (the shorter binary fraction); then the smaller magnitude.
+std::tuple<bool, bool, int, int, double> simplicity(double x) {
+  char text[32];
+  const auto end = std::to_chars(text, text + sizeof text, x, std::chars_format::scientific).ptr;
+  const std::string_view s(text, static_cast<std::size_t>(end - text));
+  const int digits = static_cast<int>(std::count_if(s.begin(), s.begin() + static_cast<std::ptrdiff_t>(s.find('e')),
+                                                    [](char c) { return c >= '0' && c <= '9'; }));
+  int e = 0;
+  const double m = std::frexp(std::fabs(x), &e);  // |x| = m · 2^e, 1/2 <= m < 1
+  int bits = 0;
+  for (double rest = m; rest != 0; rest = rest * 2 - std::trunc(rest * 2)) ++bits;
+  return {x != 0, std::trunc(x) != x, digits, bits, std::fabs(x)};
+}
+
+// Values simpler than x (by simplicity), simplest first, as Hypothesis shrinks a number: toward 0, toward the
+// integers (toward zero and nearest), toward short binary fractions (x's significand cut to 1, 2, …, 52 bits
+// toward zero) and short decimals (x rounded to 1, 2, …, 16 significant digits). Each is a finite double.
+std::vector<double> simpler_values(double x) {
+  std::vector<double> out{0.0, std::trunc(x), std::nearbyint(x)};
+  int e = 0;
+  std::frexp(x, &e);
+  for (int bits = 1; bits < 53; ++bits) out.push_back(std::ldexp(std::trunc(std::ldexp(x, bits - e)), e - bits));
+  for (int digits = 1; digits <= 16; ++digits) {
+    char text[40];
+    const auto end = std::to_chars(text, text + sizeof text - 1, x, std::chars_format::scientific, digits - 1).ptr;
+    *end = '\0';
+    out.push_back(std::strtod(text, nullptr));
+  }
+  const auto key = simplicity(x);
+  std::erase_if(out, [&](double y) { return !std::isfinite(y) || !(simplicity(y) < key); });
+  std::sort(out.begin(), out.end(), [](double a, double b) { return simplicity(a) < simplicity(b); });
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+// One case's chain of steps (properties/chain.hpp), its failure, and how it ended: every step checked; no step
+// checked, because w_0 has no expected answer (its next world leaves the double range, or, replayed in the
+// literal profile, it is outside the domain): skipped; or checked up to a world with no expected answer.
+using properties::Chain;
+using Failure = properties::ChainFailure;
+using Ending = Chain::Ending;
+
+// The most cases conform asks the candidate about in one Checker::run_all, which sends every request whose
+// world is known before reading their answers (ProcessCandidate also bounds the bytes in flight), so that they
+// share one round trip through the pipes. A batch of requests ends sooner, at a case that chains another step:
+// by default at each tangent-after-step case, one in 17, so about 14 requests a batch (docs/benchmarks.md);
+// with --steps 2 or more, at every case, so 2. The bound matters when no case chains, and bounds the requests
+// a failing run asks beyond the case-by-case run's.
+constexpr std::size_t kBatchCases = 64;
+
+class Checker {
+ public:
+  Checker(Candidate& candidate, const Options& options) : candidate_(candidate), options_(options) {}
+
+  // Chains `steps` steps from w.
+  std::optional<Failure> run(const Circles& w, std::uint64_t steps, Ending& ending) {
+    Chain chain(w, steps, options_.level);
+    run_all(std::span(&chain, 1));
+    ending = chain.ending();
+    return std::move(chain.failure());
+  }
+
+  // Runs the chains as run() would run them one after another, up to the first that fails: returns its index
+  // (its `failure` set), or chains.size() if none does. The candidate is asked in batches
+  // (Candidate::answer_all): every request whose world is known, in the order of the sequential run, up to
+  // and including the first whose answer a later request needs (a step of a chain that goes on). So the
+  // candidate gets the sequential run's requests in the same order, with the same ids (a step that carries
+  // state from one request to the next is caught as before), plus, after a failing request, the rest of its
+  // batch, whose answers are read and not judged.
+  std::size_t run_all(std::span<Chain> chains) {
+    std::vector<Circles> asked, expected;
+    std::vector<std::size_t> whose;  // asked[i] is the next step of chains[whose[i]]
+    for (std::size_t first = 0; first < chains.size();) {
+      asked.clear();
+      expected.clear();
+      whose.clear();
+      std::size_t next = chains.size();  // where the next batch starts: the chain that goes on, if any
+      for (std::size_t k = first; k < chains.size(); ++k) {
+        Chain& chain = chains[k];
+        if (!chain.going()) continue;
+        auto reference = properties::expected_step(chain.input(), options_.profile);
+        if (!std::holds_alternative<Circles>(reference)) {
+          chain.end();
+          continue;
+        }
+        asked.push_back(chain.input());
+        expected.push_back(std::move(std::get<Circles>(reference)));
+        whose.push_back(k);
+        if (chain.goes_on_after_next()) {  // its next request waits for this answer
+          next = k;
+          break;
+        }
+      }
+      if (asked.empty()) break;
+      Answers read = candidate_.answer_all(asked, next_id_);
+      std::vector<Circles>& answers = read.answers;
+      next_id_ += asked.size();
+      // The answers before a fault are judged first: a wrong one is the counterexample the sequential run
+      // reports, even when the candidate then breaks on a request the sequential run would not have sent.
+      for (std::size_t i = 0; i < answers.size(); ++i) {
+        if (!chains[whose[i]].judge(std::move(answers[i]), std::move(expected[i]))) return whose[i];
+      }
+      if (read.broken) throw *read.broken;
+      first = next;
+    }
+    return chains.size();
+  }
+
+ private:
+  Candidate& candidate_;
+  const Options& options_;
+  std::uint64_t next_id_ = 1;
+};
+
+// Case c's family and generator: the families of the profile in turn.
+class Cases {
+ public:
+  explicit Cases(Profile profile) : families_(properties::families(profile)) {
+    for (const properties::Family f : families_) gens_.push_back(properties::gen::boundary_world(f, profile));
+  }
+  std::span<const properties::Family> families() const { return families_; }
+  std::size_t family(std::uint64_t c) const { return static_cast<std::size_t>(c % families_.size()); }
+  // Case c's world from its random stream. RapidCheck's sizes cycle 0 … 99 over a run (the families'
+  // generators ignore it).
+  rc::Shrinkable<Circles> world(std::uint64_t c, const rc::Random& random) const {
+    return gens_[family(c)](random, static_cast<int>(c % rc::kNominalSize));
+  }
+
+ private:
+  std::span<const properties::Family> families_;
+  std::vector<rc::Gen<Circles>> gens_;
+};
+
+}  // namespace
+
+std::vector<Circles> case_worlds(std::uint64_t seed, std::uint64_t cases, Profile profile) {
+  const Cases all(profile);
+  rc::Random stream(seed);
+  std::vector<Circles> worlds;
+  for (std::uint64_t c = 0; c < cases; ++c) worlds.push_back(all.world(c, stream.split()).value());
+  return worlds;
+}
+
+std::pair<std::uint64_t, std::uint64_t> parse_shard(std::string_view text) {
+  const auto slash = text.find('/');
+  std::uint64_t i = 0, n = 0;
+  const auto number = [](std::string_view digits, std::uint64_t& v) {
+    const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), v);
+    return !digits.empty() && error == std::errc{} && end == digits.data() + digits.size();
+  };
+  if (slash == std::string_view::npos || !number(text.substr(0, slash), i) || !number(text.substr(slash + 1), n) ||
+      n == 0 || i >= n)
+    throw std::invalid_argument("--shard: \"" + std::string(text) + "\" is not i/n with 0 <= i < n");
+  return {i, n};
+}
+
+const char* name(Outcome outcome) {
+  switch (outcome) {
+    case Outcome::conforms: return "conforms";
+    case Outcome::does_not_conform: return "does not conform";
+    case Outcome::cannot_check: break;
+  }
+  return "cannot check";
+}
+
+const char* name(FamilyStatus status) {
+  switch (status) {
+    case FamilyStatus::passed: return "passed";
+    case FamilyStatus::failed: return "failed";
+    case FamilyStatus::not_reached: break;
+  }
+  return "not reached";
+}
+
+namespace {
+
+// check()'s work, which throws BrokenCandidate and ConformError for check() to turn into a verdict.
+class Run {
+ public:
+  Run(Candidate& candidate, const Options& options, Verdict& verdict)
+      : candidate_(candidate), options_(options), verdict_(verdict), checker_(candidate, options) {}
+
+  void operator()() {
+    replay_corpus();
+    if (verdict_.counterexample) return;
+    check_cases();
+    if (verdict_.counterexample) return;
+    candidate_.finish();
+    require_every_family();
+  }
+
+ private:
+  std::string replay_options() const {
+    return " --level " + options_.level.text() + (options_.steps > 1 ? " --steps " + std::to_string(options_.steps) : "") +
+           (options_.profile == Profile::literal ? " --profile literal" : "");
+  }
+
+  void fail(Failure failure, Counterexample c) {
+    c.step = failure.step;
+    c.steps = failure.steps;
+    c.input = std::move(failure.input);
+    c.expected = std::move(failure.expected);
+    c.actual = std::move(failure.actual);
+    c.difference = std::move(failure.difference);
+    verdict_.outcome = Outcome::does_not_conform;
+    verdict_.counterexample = std::move(c);
+  }
+
+  // 1. The corpus, replayed first.
+  void replay_corpus() {
+    if (options_.save.empty()) return;
+    std::vector<std::pair<std::filesystem::path, StoredCounterexample>> corpus;
+    try {
+      corpus = load_corpus(options_.save);
+    } catch (const CorpusError& e) {
+      throw ConformError(std::string("--save: ") + e.what());
+    }
+    for (const auto& [file, stored] : corpus) {
+      Ending ending = Ending::checked;
+      std::optional<Failure> failure = checker_.run(stored.world, options_.steps, ending);
+      if (ending == Ending::no_reference_at_w0) {
+        ++verdict_.not_replayed;
+        continue;
+      }
+      ++verdict_.replayed;
+      if (!failure) continue;
+      Counterexample c;
+      c.family = stored.family;
+      c.stored = file;
+      c.found_seed = stored.seed;
+      c.found_case = stored.case_index;
+      c.circles_before = stored.world.size();
+      c.shrink_path = {stored.world};
+      c.replay = "--save " + options_.save.string() + replay_options() + " (the corpus is replayed first)";
+      for (FamilyResult& f : verdict_.families)
+        if (properties::name(f.family) == stored.family) {
+          f.has_counterexample = true;
+          f.status = FamilyStatus::failed;
+        }
+      fail(std::move(*failure), std::move(c));
+      return;
+    }
+  }
+
+  // 2. The generated cases, in rounds of one case per family.
+  void check_cases() {
+    const std::span<const properties::Family> families = cases_.families();
+    const std::uint64_t F = families.size();
+    rc::Random stream(options_.seed);
+    // The cases of this run, checked kBatchCases at a time (Checker::run_all), then counted and, for the first
+    // that fails, shrunk, in order: the verdict is the sequential run's.
+    struct Case {
+      std::uint64_t index;
+      std::size_t family;
+      rc::Shrinkable<Circles> world;
+    };
+    std::vector<Case> batch;
+    std::vector<Chain> chains;
+    // Checks the batch; returns the index of its failing case, if one fails.
+    const auto check_batch = [&]() -> std::optional<std::size_t> {
+      const std::size_t failed = checker_.run_all(chains);
+      for (std::size_t k = 0; k < chains.size() && k <= failed; ++k) {
+        FamilyResult& family = verdict_.families[batch[k].family];
+        ++verdict_.cases;
+        ++family.drawn;
+        if (chains[k].ending() == Ending::no_reference_at_w0) ++verdict_.skipped;
+        else ++family.checked;
+        verdict_.cut_short += chains[k].ending() == Ending::no_reference_later;
+      }
+      if (failed < chains.size()) return failed;
+      batch.clear();
+      chains.clear();
+      return std::nullopt;
+    };
+    // --case I replays case I whatever --cases says: the replay line of a report does not repeat it.
+    const std::uint64_t end = options_.only_case ? *options_.only_case + 1 : options_.cases;
+    std::optional<std::size_t> failed;
+    for (std::uint64_t c = 0; c < end && !failed; ++c) {
+      const rc::Random random = stream.split();  // case c's stream, whichever cases this run checks
+      if (options_.only_case ? c != *options_.only_case : (c / F) % options_.shards != options_.shard) continue;
+      const std::size_t family = cases_.family(c);
+      // At least as far as the family's boundary: tangent-after-step's tangency is decided at the second step.
+      const std::uint64_t steps = std::max(options_.steps, properties::steps_to_decide(families[family]));
+      batch.push_back(Case{c, family, cases_.world(c, random)});
+      chains.emplace_back(batch.back().world.value(), steps, options_.level);
+      if (batch.size() == kBatchCases) failed = check_batch();
+    }
+    if (!failed && !batch.empty()) failed = check_batch();
+    if (!failed) return;
+
+    const auto& [c, family, drawn_world] = batch[*failed];
+    rc::Shrinkable<Circles> world = drawn_world;
+    const std::uint64_t steps = chains[*failed].steps();
+    Failure failure = std::move(*chains[*failed].failure());
+    Counterexample counterexample;
+    counterexample.shrink_path = {world.value()};
+    counterexample.circles_before = world.value().size();
+    // Shrink: take the first simpler world that still fails, until none does (or the budget is spent).
+    int queries = 0;
+    for (bool progress = true; progress && queries < kMaxShrinkQueries;) {
+      progress = false;
+      auto candidates = world.shrinks();
+      while (auto next = candidates.next()) {
+        if (++queries > kMaxShrinkQueries) break;
+        Ending e = Ending::checked;
+        std::optional<Failure> f;
+        try {
+          f = checker_.run(next->value(), steps, e);
+        } catch (const BrokenCandidate&) {
+          // A simpler world on which the candidate breaks (crashes, hangs, writes a malformed line) does not
+          // show the wrong answer being shrunk; the next is asked of the program started afresh.
+          continue;
+        }
+        if (f) {
+          world = *next;
+          failure = std::move(*f);
+          counterexample.shrink_path.push_back(world.value());
+          progress = true;
+          break;
+        }
+      }
+    }
+    if (options_.simplify) simplify(world.value(), steps, failure, counterexample);
+    FamilyResult& result = verdict_.families[family];
+    result.status = FamilyStatus::failed;
+    result.has_counterexample = true;
+    counterexample.family = properties::name(families[family]);
+    counterexample.case_index = c;
+    counterexample.replay = "--seed " + std::to_string(options_.seed) + " --case " + std::to_string(c) + replay_options();
+    if (!options_.save.empty()) {
+      const StoredCounterexample stored{options_.profile, failure.input, options_.level.text(), counterexample.family,
+                                        candidate_.name(), options_.seed, c, steps, failure.step, failure.expected,
+                                        failure.actual, failure.difference};
+      try {
+        counterexample.saved = save(options_.save, stored);
+      } catch (const CorpusError& e) {
+        counterexample.not_saved = e.what();
+      }
+    }
+    fail(std::move(failure), std::move(counterexample));
+  }
+
+  // After shrinking: each number of the world, in turn, replaced by its simplest value (simpler_values) with
+  // which the case still fails, pass after pass until no number changes or the budget is spent. A world on
+  // which the candidate breaks is passed over, as in shrinking.
+  void simplify(Circles world, std::uint64_t steps, Failure& failure, Counterexample& counterexample) {
+    int queries = 0;
+    for (bool progress = true; progress && queries < kMaxSimplifyQueries;) {
+      progress = false;
+      for (std::size_t k = 0; k < world.size(); ++k)
+        for (std::size_t f = 0; f < 5; ++f)
+          for (const double y : simpler_values(world[k][f])) {
+            if (++queries > kMaxSimplifyQueries) return;
+            Circles simpler = world;
+            simpler[k][f] = y;
+            Ending e = Ending::checked;
+            std::optional<Failure> still;
+            try {
+              still = checker_.run(simpler, steps, e);
+            } catch (const BrokenCandidate&) {
+              continue;
+            }
+            // The same failure, made simpler: at the same step, in the same field (a stateful candidate may
+            // fail otherwise on a world that happens to equal one of its earlier answers).
+            if (!still || still->step != failure.step || still->difference.field != failure.difference.field) continue;
+            world = std::move(simpler);
+            failure = std::move(*still);
+            counterexample.shrink_path.push_back(world);
+            progress = true;
+            break;
+          }
+    }
+  }
+
+  // 3. Every family must have been checked: a family with no case is a gap in the check, not a pass.
+  void require_every_family() {
+    if (options_.only_case || options_.cases == 0) return;
+    const std::uint64_t F = verdict_.families.size();
+    for (const FamilyResult& f : verdict_.families) {
+      if (f.checked > 0) continue;
+      const std::string family = properties::name(f.family);
+      if (f.drawn == 0)
+        throw ConformError("no case of the family " + family + " was checked: each round of " + std::to_string(F) +
+                           " cases draws every family of the " + properties::name(options_.profile) +
+                           " profile once, and this run " +
+                           (options_.shards > 1 ? "(shard " + std::to_string(options_.shard) + "/" +
+                                                      std::to_string(options_.shards) + ") "
+                                                : std::string()) +
+                           "checked " + std::to_string(verdict_.cases) + "; raise --cases to at least " +
+                           std::to_string(F * options_.shards));
+      throw ConformError("no case of the family " + family + " was checked: all " + std::to_string(f.drawn) +
+                         " of its worlds were skipped (their next world leaves the double range)");
+    }
+  }
+
+  Candidate& candidate_;
+  const Options& options_;
+  Verdict& verdict_;
+  Checker checker_;
+  const Cases cases_{options_.profile};
+};
+
+}  // namespace
+
+Verdict unchecked(std::string candidate, const Options& options, std::string error) {
+  Verdict verdict;
+  verdict.outcome = Outcome::cannot_check;
+  verdict.candidate = std::move(candidate);
+  verdict.options = options;
+  verdict.error = std::move(error);
+  for (const properties::Family f : properties::families(options.profile))
+    verdict.families.push_back({f, 0, 0, FamilyStatus::not_reached, false});
+  return verdict;
+}
+
+Verdict check(Candidate& candidate, const Options& options) {
+  // A --save directory that cannot be used is a usage error, found before any case runs.
+  if (!options.save.empty()) {
+    std::error_code error;
+    std::filesystem::create_directories(options.save, error);
+    if (error || !std::filesystem::is_directory(options.save))
+      throw ConformError("--save: cannot use the directory " + options.save.string() +
+                         (error ? ": " + error.message() : ": it is not a directory"));
+  }
+  const auto start = std::chrono::steady_clock::now();
+  Verdict verdict = unchecked(candidate.name(), options, "");
+  verdict.outcome = Outcome::conforms;
+  try {
+    Run(candidate, options, verdict)();
+  } catch (const BrokenCandidate& e) {
+    verdict.outcome = Outcome::cannot_check;
+    verdict.error = e.what();
+  } catch (const ConformError& e) {
+    verdict.outcome = Outcome::cannot_check;
+    verdict.error = e.what();
+  }
+  // A family with no checked case did not pass: the run stopped (a counterexample, a fault) before it, or
+  // replayed one case or the corpus alone.
+  for (FamilyResult& f : verdict.families)
+    if (f.status != FamilyStatus::failed) f.status = f.checked > 0 ? FamilyStatus::passed : FamilyStatus::not_reached;
+  verdict.elapsed = std::chrono::steady_clock::now() - start;
+  return verdict;
+}
+
+}  // namespace circles::conform

@@ -1,0 +1,136 @@
+// circles::conform: checks a candidate (conform/candidate.hpp) against the spec on generated worlds, and returns
+// its verdict as data (Verdict): conforms, does not conform (with the first counterexample, shrunk to a minimal
+// world, and its shrink path) or cannot check (and why), the cases per family, the replay line and the timing.
+// `circles conform` prints it (cli/conform_report.hpp), draws its picture and writes it as a report for CI.
+//
+// Cases come in rounds of one case per family of the profile (properties/boundaries.hpp): case c is drawn from
+// family c mod F, F the number of families, with its own random stream split in order from the seed, so case c
+// of a seed is the same world on every run, shard and machine. A shard takes whole rounds, so each shard sees
+// every family. A case chains `steps` steps, or as many as its family needs to decide its boundary if more
+// (properties::steps_to_decide: 2 for tangent-after-step): the candidate is fed its own outputs, and each
+// answer is checked against the expected answer for the candidate's input (properties::expected_step). A world
+// whose expected answer leaves the double range cannot be asked (the protocol carries finite doubles) and is
+// skipped, and counted; in the literal profile a chain also stops at a world outside the literal domain.
+// The candidate is asked about up to 64 cases at a time (Candidate::answer_all), in the order and with the ids a
+// case-by-case run would use, so that a candidate program gets several requests per round trip; the verdict,
+// the counterexample and its shrinking are those of the case-by-case run.
+#pragma once
+
+#include "conform/candidate.hpp"
+#include "formats/protocol.hpp"
+#include "properties/conformance.hpp"
+
+#include <chrono>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace circles::conform {
+
+using formats::Circles;
+
+using formats::Circles;
+using properties::compare;
+using properties::Difference;
+using properties::Level;
+using properties::parse_level;
+using properties::Profile;
+
+struct Options {
+  Level level;
+  std::uint64_t cases = 1000;
+  std::uint64_t seed = 1;
+  std::uint64_t steps = 1;  // steps chained per case (at least properties::steps_to_decide of its family)
+  std::uint64_t shard = 0, shards = 1;  // this run checks the rounds q with q mod shards == shard
+  std::optional<std::uint64_t> only_case;  // replay one case
+  Profile profile = Profile::resolved;
+  // The corpus: every *.json file here is replayed first, and a new counterexample is saved here. Empty:
+  // none. Created if missing.
+  std::filesystem::path save{};
+  // After shrinking, simplify each number of the counterexample while it still fails: toward 0, integers and
+  // short binary fractions (docs/conform.md, "Counterexamples a person can read"). Off only to measure it.
+  bool simplify = true;
+};
+
+// "i/n" → shard i of n (0 ≤ i < n). Throws std::invalid_argument with a message for --shard.
+std::pair<std::uint64_t, std::uint64_t> parse_shard(std::string_view text);
+
+// A run that cannot give a verdict, found before any case runs: a --save directory that cannot be used. what()
+// says which and what to do; `circles conform` exits 2. (Faults found while checking are a Verdict whose
+// outcome is cannot_check.)
+class ConformError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// The three verdicts, as the report names them: "conforms", "does not conform", "cannot check" (exit 0, 1, 2).
+enum class Outcome { conforms, does_not_conform, cannot_check };
+const char* name(Outcome outcome);
+
+// How one family fared. Issue 14's --keep-going adds expected_failure and unexpected_pass (against an
+// expectation file); a run that stops at its first counterexample marks the families it did not reach
+// `not_reached`.
+enum class FamilyStatus { passed, failed, not_reached };
+const char* name(FamilyStatus status);  // "passed", "failed", "not reached"
+
+// The first answer that differs, with how it was found and how to see it again.
+struct Counterexample {
+  std::string family;                          // its family, "" for a stored file without one
+  std::optional<std::uint64_t> case_index;     // the generated case; nothing for a stored file
+  std::filesystem::path stored;                // the corpus file it was replayed from, if it was
+  std::optional<std::uint64_t> found_seed, found_case;  // a stored file's record of where it was found
+  std::uint64_t step = 1, steps = 1;           // the failing step of the chain (1-based) and the chain's length
+  Circles input, expected, actual;             // the world asked at that step, and the two answers
+  Difference difference;
+  // Shrinking: the world drawn, then each simpler w_0 that still failed, in order (the last the one reported):
+  // first fewer circles (RapidCheck's shrinks), then numbers simplified one at a time.
+  std::vector<Circles> shrink_path;
+  std::size_t circles_before = 0;              // circles of the world drawn
+  std::string replay;                          // "--seed 3 --case 3 --level exact": the options that replay it
+  std::filesystem::path saved;                 // where --save stored it, if it did
+  std::string not_saved;                       // why it could not be stored, if it could not
+  std::uint64_t shrinks() const { return shrink_path.empty() ? 0 : shrink_path.size() - 1; }
+};
+
+// One family's record: its cases drawn and checked (a drawn case is skipped when its first world has no
+// expected answer), its status, and its counterexample, if the run's is of this family.
+struct FamilyResult {
+  properties::Family family;
+  std::uint64_t drawn = 0, checked = 0;
+  FamilyStatus status = FamilyStatus::passed;
+  bool has_counterexample = false;  // Verdict::counterexample is this family's
+};
+
+struct Verdict {
+  Outcome outcome = Outcome::conforms;
+  std::string candidate;  // "the program `python3 step.py`"
+  Options options;        // what was checked: seed, shard, level, profile, steps, …
+  std::uint64_t cases = 0;       // generated cases run (up to and including a failing one)
+  std::uint64_t skipped = 0;     // of those, cases whose w_0 has no expected answer
+  std::uint64_t cut_short = 0;   // chains that ended early at a world with no expected answer
+  std::uint64_t replayed = 0, not_replayed = 0;  // corpus files replayed, and those outside the profile's domain
+  std::vector<FamilyResult> families;  // every family of the profile, in order
+  std::optional<Counterexample> counterexample;  // set when the outcome is does_not_conform
+  std::string error;                             // why, when the outcome is cannot_check
+  std::chrono::duration<double> elapsed{};       // wall time of the check
+  std::uint64_t checked() const { return cases - skipped; }
+};
+
+// The worlds of cases 0 … cases − 1 of `seed` in `profile`, each as conform draws it (before any shrinking),
+// whatever the shard: for tools that hand out conform's worlds (cli/vectors.hpp).
+std::vector<Circles> case_worlds(std::uint64_t seed, std::uint64_t cases, Profile profile = Profile::resolved);
+
+// The verdict cannot_check, for `error`, of a candidate not checked at all (a program that cannot start): no
+// case run, every family not reached.
+Verdict unchecked(std::string candidate, const Options& options, std::string error);
+
+// Checks `candidate`. A candidate that breaks (BrokenCandidate), a corpus file that cannot be replayed and a
+// family of which no case was checked give the verdict cannot_check, with the reason in `error`. Throws
+// ConformError only for a --save directory that cannot be used, before any case runs.
+Verdict check(Candidate& candidate, const Options& options);
+
+}  // namespace circles::conform

@@ -1,0 +1,156 @@
+#include "conform/engines.hpp"
+
+#include "impl/engine.hpp"
+#include "impl/exact_engine.hpp"
+#include "spec/oracle.hpp"
+
+#include <array>
+#include <cmath>
+
+namespace circles::conform {
+
+StepOverflow::StepOverflow(std::uint64_t s, std::size_t i, spec::Field f)
+    : std::overflow_error("step " + std::to_string(s) + ", " + overflow_reason(i, f)), step(s), index(i), field(f) {}
+
+std::string overflow_reason(std::size_t index, spec::Field field) {
+  return "circle " + std::to_string(index) + ", field " + spec::name(field) +
+         ": the position p + v/60 overflows to infinity";
+}
+
+void Stepper::step() {
+  if (const auto overflow = advance()) throw StepOverflow(steps_ + 1, overflow->index, overflow->field);
+  ++steps_;
+}
+
+namespace {
+
+// An engine of impl/ (impl::Engine or impl::ExactEngine): its step, with PositionOverflow as an Overflow.
+template <class E>
+class ImplStepper final : public Stepper {
+ public:
+  ImplStepper(const Circles& world, unsigned threads)
+      : engine_(impl::World(world), impl::EngineOptions{.threads = threads}) {}
+  Circles circles() const override { return engine_.world().circles(); }
+  std::optional<spec::Sequence> exact() const override {
+    if constexpr (requires { engine_.exact(); }) return engine_.exact();
+    return std::nullopt;
+  }
+  std::optional<impl::EngineStats> work() const override {
+    if constexpr (requires { engine_.stats(); }) return engine_.stats();
+    return std::nullopt;
+  }
+
+ private:
+  std::optional<Overflow> advance() override {
+    try {
+      engine_.step();
+    } catch (const impl::PositionOverflow& e) {
+      return Overflow{e.index, std::string_view(e.field) == "px" ? spec::Field::px : spec::Field::py};
+    }
+    return std::nullopt;
+  }
+  E engine_;
+};
+
+// spec::resolved_step_rounded: the exact step in rationals, rounded. Slow, and the reference of every other.
+class OracleStepper final : public Stepper {
+ public:
+  OracleStepper(const Circles& world, unsigned) : world_(world) {}
+  Circles circles() const override { return world_; }
+
+ private:
+  std::optional<Overflow> advance() override {
+    Circles next = spec::resolved_step_rounded(world_);  // rounds a position beyond DBL_MAX to ±infinity
+    for (std::size_t k = 0; k < next.size(); ++k)
+      for (const spec::Field f : {spec::Field::px, spec::Field::py})
+        if (!std::isfinite(next[k][static_cast<std::size_t>(f)])) return Overflow{k, f};
+    world_ = std::move(next);
+    return std::nullopt;
+  }
+  Circles world_;
+};
+
+// spec::resolved_step on the exact sequence from w_0, each world rounded: the reference of the exact engines.
+class ExactOracleStepper final : public Stepper {
+ public:
+  explicit ExactOracleStepper(const Circles& world) {
+    for (std::size_t k = 0; k < world.size(); ++k)
+      world_.push_back(spec::from_doubles(world[k], k, spec::Radii::non_negative));
+  }
+  Circles circles() const override {
+    Circles out;
+    for (const spec::Circle& c : world_) out.push_back(spec::nearest_doubles(c));
+    return out;
+  }
+  std::optional<spec::Sequence> exact() const override { return world_; }
+
+ private:
+  std::optional<Overflow> advance() override {
+    spec::Sequence next = spec::resolved_step(world_);
+    for (std::size_t k = 0; k < next.size(); ++k)
+      for (const spec::Field f : {spec::Field::px, spec::Field::py}) {
+        const spec::Q& p = f == spec::Field::px ? next[k].p.x() : next[k].p.y();
+        if (!std::isfinite(spec::nearest_double(p))) return Overflow{k, f};
+      }
+    world_ = std::move(next);
+    return std::nullopt;
+  }
+  spec::Sequence world_;
+};
+
+template <class S>
+std::unique_ptr<Stepper> start(const Circles& world, unsigned threads) {
+  return std::make_unique<S>(world, threads);
+}
+
+constexpr std::array kEngines{
+    EngineEntry{"double",
+                "the double engine of impl/: exact decisions, correctly rounded positions, a broad phase, threads",
+                true, false, &start<ImplStepper<impl::Engine>>},
+    EngineEntry{"exact",
+                "the exact engine of impl/: the oracle's exact sequence in integers, each output rounded; a broad "
+                "phase, threads",
+                true, true, &start<ImplStepper<impl::ExactEngine>>},
+    EngineEntry{"oracle", "the exact oracle of spec/, rounded to doubles: the reference, slow, one thread", false,
+                false, &start<OracleStepper>},
+};
+
+}  // namespace
+
+std::span<const EngineEntry> engines() { return kEngines; }
+
+unsigned max_threads() { return impl::Engine::kMaxThreads; }
+
+std::string engine_names() {
+  std::string names;
+  for (const EngineEntry& e : kEngines) (names += names.empty() ? "" : ", ") += e.name;
+  return names;
+}
+
+const EngineEntry* find_engine(std::string_view name) {
+  for (const EngineEntry& e : kEngines)
+    if (e.name == name) return &e;
+  return nullptr;
+}
+
+UnknownEngine::UnknownEngine(std::string_view name)
+    : std::invalid_argument("unknown engine \"" + std::string(name) + "\" (the engines are: " + engine_names() + ")") {}
+
+const EngineEntry& engine(std::string_view name) {
+  const EngineEntry* e = find_engine(name);
+  if (!e) throw UnknownEngine(name);
+  return *e;
+}
+
+std::unique_ptr<Stepper> reference(const EngineEntry& engine, const Circles& world) {
+  if (engine.exact) return std::make_unique<ExactOracleStepper>(world);
+  return conform::engine("oracle").start(world, 1);
+}
+
+Circles step_once(const EngineEntry& engine, const Circles& world, unsigned threads) {
+  const auto stepper = engine.start(world, threads);
+  stepper->step();
+  return stepper->circles();
+}
+
+}  // namespace circles::conform

@@ -1,0 +1,106 @@
+// The engine registry: the names `--engine` takes, each a way to step a world of doubles.
+//
+// Every engine computes the resolved step of the oracle (docs/math.md), each coordinate rounded to the nearest
+// double. A rounding engine steps from the last world in doubles and must equal spec::resolved_step_rounded by
+// value at every step; an exact engine (docs/exact-engine.md) keeps the exact sequence of the oracle from w_0
+// and rounds only what it shows, so its w_t is the oracle's exact w_t rounded. To add one, write a Stepper for
+// it in engines.cpp and add a row to the table there; every command and message picks it up.
+#pragma once
+
+#include "formats/protocol.hpp"
+#include "impl/pair_list.hpp"  // impl::EngineStats
+#include "spec/oracle.hpp"  // spec::Sequence
+#include "spec/outside_c.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace circles::conform {
+
+using formats::Circles;
+
+// A step whose next position is beyond the double range: circle `index`, coordinate `field` (px or py) of the
+// world the step would produce, w_step. what(): "step 31, circle 2, field px: the position p + v/60
+// overflows to infinity".
+class StepOverflow : public std::overflow_error {
+ public:
+  StepOverflow(std::uint64_t step, std::size_t index, spec::Field field);
+  std::uint64_t step;
+  std::size_t index;
+  spec::Field field;
+};
+
+// "circle 2, field px: the position p + v/60 overflows to infinity": what() without the step.
+std::string overflow_reason(std::size_t index, spec::Field field);
+
+// A world being stepped by one engine.
+class Stepper {
+ public:
+  virtual ~Stepper() = default;
+
+  // w_{steps() + 1} from w_{steps()}. Throws StepOverflow, leaving the world as it was.
+  void step();
+  std::uint64_t steps() const noexcept { return steps_; }
+  virtual Circles circles() const = 0;
+  // w_steps() itself, as rationals, from an engine that keeps the exact sequence (EngineEntry::exact); nullopt
+  // from one that keeps only doubles.
+  virtual std::optional<spec::Sequence> exact() const { return std::nullopt; }
+  // What the steps so far did and skipped (impl::EngineStats), from an engine of impl/; nullopt from the
+  // oracle, which does everything every step.
+  virtual std::optional<impl::EngineStats> work() const { return std::nullopt; }
+
+ protected:
+  struct Overflow {
+    std::size_t index;
+    spec::Field field;
+  };
+  // One step; on an overflow, the first circle and field (in index order, px before py), the world unchanged.
+  virtual std::optional<Overflow> advance() = 0;
+
+ private:
+  std::uint64_t steps_ = 0;
+};
+
+struct EngineEntry {
+  std::string_view name;
+  std::string_view summary;  // for --help
+  bool threaded;             // whether `threads` below means anything to it
+  bool exact;                // keeps the exact sequence from w_0 (its reference is reference() below)
+  // A stepper at w_0 = `world` (circles of C in the resolved profile) using up to `threads` threads (0: all
+  // cores; engines without threads ignore it).
+  std::unique_ptr<Stepper> (*start)(const Circles& world, unsigned threads);
+};
+
+// Every engine, in the order --help lists them.
+std::span<const EngineEntry> engines();
+
+// The largest thread count an engine takes.
+unsigned max_threads();
+
+// "double, exact, oracle"
+std::string engine_names();
+
+// The engine of that name, or nullptr.
+const EngineEntry* find_engine(std::string_view name);
+
+// A name that is no engine: "unknown engine "x" (the engines are: double, exact, oracle)".
+class UnknownEngine : public std::invalid_argument {
+ public:
+  explicit UnknownEngine(std::string_view name);
+};
+const EngineEntry& engine(std::string_view name);
+
+// The oracle that `engine` must equal at every step from w_0 = `world`: the correctly rounded oracle stepped
+// from the last world in doubles, or for an exact engine the oracle's exact sequence, each world rounded.
+std::unique_ptr<Stepper> reference(const EngineEntry& engine, const Circles& world);
+
+// w_1 from w_0 = `world` with `engine`: the step of one protocol request. Throws StepOverflow (step 1).
+Circles step_once(const EngineEntry& engine, const Circles& world, unsigned threads);
+
+}  // namespace circles::conform

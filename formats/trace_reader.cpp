@@ -1,0 +1,81 @@
+#include "formats/trace_reader.hpp"
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <new>
+#include <stdexcept>
+#include <string_view>
+#include <utility>
+
+namespace circles::formats {
+
+TraceReadError::TraceReadError(const std::string& file, std::size_t line_number, const std::string& why)
+    : std::runtime_error(file + (line_number ? ":" + std::to_string(line_number) : std::string()) + ": " + why),
+      source(file),
+      line(line_number),
+      reason(why) {}
+
+TraceReader::TraceReader(const std::string& path) : source_(path) {
+  // A directory opens as a stream on Linux and reads as empty, which would be reported as an empty file.
+  std::error_code ignored;
+  if (std::filesystem::is_directory(path, ignored)) fail(0, "cannot read the file: it is a directory");
+  auto file = std::make_unique<std::ifstream>(path, std::ios::binary);
+  if (!*file) fail(0, std::string("cannot open the file: ") + std::strerror(errno));
+  owned_ = std::move(file);
+  in_ = owned_.get();
+}
+
+TraceReader::TraceReader(std::istream& in, std::string source) : in_(&in), source_(std::move(source)) {}
+
+void TraceReader::fail(std::size_t line, const std::string& reason) const { throw TraceReadError(source_, line, reason); }
+
+std::optional<Line> TraceReader::next() {
+  for (;;) {
+    errno = 0;
+    if (!std::getline(*in_, text_)) break;
+    ++line_;
+    const bool blank = text_.find_first_not_of(" \t\r\n") == std::string::npos;
+    // Blank lines before the first world: an empty file if nothing follows, an empty line if something does.
+    if (blank && !last_step_) {
+      if (!first_blank_) first_blank_ = line_;
+      continue;
+    }
+    Line world;
+    try {
+      // parse_line refuses a blank line with the protocol's own message; so is the first blank line before
+      // a world reported.
+      if (first_blank_) parse_line("", first_blank_, kStep);
+      world = parse_line(text_, line_, kStep);
+    } catch (const ProtocolError& e) {
+      fail(e.line, e.reason);
+    } catch (const std::bad_alloc&) {
+      fail(line_, "the world is too large to hold in memory");
+    }
+    if (last_step_) {
+      if (*last_step_ == std::numeric_limits<std::uint64_t>::max())
+        fail(line_, "\"step\": found " + std::to_string(world.number) + " after " + std::to_string(*last_step_) +
+                        ", the largest step a trace can hold");
+      if (world.number != *last_step_ + 1)
+        fail(line_, "\"step\": expected " + std::to_string(*last_step_ + 1) + ", found " +
+                        std::to_string(world.number) + " (the steps of a trace are consecutive)");
+      if (world.circles.size() != circles_)
+        fail(line_, std::to_string(world.circles.size()) + " circles, but the first world has " +
+                        std::to_string(circles_) + " (a step maps circle k to circle k)");
+    } else {
+      circles_ = world.circles.size();
+    }
+    last_step_ = world.number;
+    return world;
+  }
+  // getline turns every failure into badbit, a line longer than memory too (std::bad_alloc, errno ENOMEM).
+  if (in_->bad())
+    fail(line_ + 1, std::string("cannot read the line: ") + (errno ? std::strerror(errno) : "read error"));
+  if (!last_step_)
+    fail(0, "empty file, expected one world per line {\"step\": t, \"circles\": [[px, py, vx, vy, r], ...]}");
+  return std::nullopt;
+}
+
+}  // namespace circles::formats

@@ -1,0 +1,167 @@
+// The reports of `circles conform` for CI (cli/report.hpp): the verdict as JSON, read back by nlohmann; as JUnit
+// XML, read back by pugixml as CI servers read it (one <testcase> per family, a <failure> with the
+// counterexample); and the reports of shards merged into one.
+#include "cli/conform_report.hpp"
+#include "cli/report.hpp"
+
+#include "conform/candidate.hpp"
+#include "conform/engines.hpp"
+#include "spec/oracle.hpp"
+#include "tests/function_candidate.hpp"
+#include "tests/thrown.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <pugixml.hpp>
+
+#include <cmath>
+#include <functional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace circles::cli {
+namespace {
+
+using circles::testing::thrown;
+using conform::Options;
+using conform::Outcome;
+using conform::Verdict;
+using formats::Circles;
+
+using circles::testing::FunctionCandidate;
+
+// The correct step, except that circle 0's px is infinite whenever a world has two circles or more.
+Circles infinite_px(const Circles& w) {
+  Circles out = spec::resolved_step_rounded(w);
+  if (out.size() >= 2) out[0][0] = INFINITY;
+  return out;
+}
+
+Verdict verdict_of(const std::function<Circles(const Circles&)>& step, std::uint64_t shard = 0, std::uint64_t shards = 1) {
+  FunctionCandidate candidate(step, "the function <&\"'>");  // a name to escape in XML
+  Options options{{0}, 340, 9, 1, shard, shards, {}};
+  return conform::check(candidate, options);
+}
+
+nlohmann::json json_of(const Verdict& v) { return nlohmann::json::parse(json_report(v, counterexample_text(v))); }
+
+TEST(report, writes_a_conforming_verdict_as_json_with_the_cases_of_each_family) {
+  const Verdict v = verdict_of(spec::resolved_step_rounded);
+  ASSERT_EQ(v.outcome, Outcome::conforms) << v.error;
+  const nlohmann::json r = json_of(v);
+  EXPECT_EQ(r["format"], "circles-conform-report/1");
+  EXPECT_EQ(r["verdict"], "conforms");
+  EXPECT_TRUE(r["error"].is_null());
+  EXPECT_EQ(r["cases"], 340);
+  EXPECT_EQ(r["seed"], 9);
+  EXPECT_EQ(r["shard"], "0/1");
+  EXPECT_TRUE(r["counterexample"].is_null());
+  ASSERT_EQ(r["families"].size(), 17u);
+  for (const auto& [family, count] : r["families"].items()) {
+    EXPECT_EQ(count, 20) << family;  // 340 cases, 20 rounds of the 17 families
+    EXPECT_EQ(r["family_status"][family], "passed") << family;
+  }
+}
+
+TEST(report, writes_a_counterexample_with_its_world_answers_and_replay_line_and_infinity_as_a_string) {
+  const Verdict v = verdict_of(infinite_px);
+  ASSERT_EQ(v.outcome, Outcome::does_not_conform) << v.error;
+  const nlohmann::json r = json_of(v);
+  EXPECT_EQ(r["verdict"], "does not conform");
+  const nlohmann::json& c = r["counterexample"];
+  ASSERT_TRUE(c.is_object());
+  EXPECT_EQ(c["world"].size(), 2u);
+  EXPECT_EQ(c["received"][0][0], "Infinity");
+  EXPECT_EQ(c["expected"][0][0].get<double>(), v.counterexample->expected[0][0]);
+  EXPECT_EQ(c["difference"]["field"], "px");
+  EXPECT_EQ(c["difference"]["received"], "Infinity");
+  EXPECT_EQ(c["replay"], v.counterexample->replay);
+  EXPECT_EQ(c["family"], v.counterexample->family);
+  EXPECT_EQ(c["case"], *v.counterexample->case_index);
+  EXPECT_EQ(r["family_status"][v.counterexample->family.c_str()], "failed");
+  EXPECT_NE(c["text"].get<std::string>().find("got Infinity"), std::string::npos);
+}
+
+// JUnit as GitHub Actions, GitLab and Jenkins read it: <testsuites>, one <testsuite>, one <testcase> per family
+// with its name, a <failure message=...> in the counterexample's family, <skipped/> in those not reached, and
+// counts on the suite that agree with its children.
+TEST(report, writes_junit_xml_with_one_testcase_per_family_and_the_failure_in_its_family) {
+  const Verdict v = verdict_of(infinite_px);
+  ASSERT_EQ(v.outcome, Outcome::does_not_conform);
+  const std::string text = junit_report(v, counterexample_text(v));
+  pugi::xml_document doc;
+  const pugi::xml_parse_result parsed = doc.load_string(text.c_str());
+  ASSERT_TRUE(parsed) << parsed.description() << "\n" << text;
+  const pugi::xml_node suite = doc.child("testsuites").child("testsuite");
+  ASSERT_TRUE(suite);
+  EXPECT_EQ(std::string(suite.attribute("name").value()), "circles conform: the function <&\"'>");
+  std::set<std::string> names;
+  int failures = 0, skipped = 0, cases = 0;
+  for (const pugi::xml_node testcase : suite.children("testcase")) {
+    ++cases;
+    names.insert(testcase.attribute("name").value());
+    if (const pugi::xml_node failure = testcase.child("failure")) {
+      ++failures;
+      EXPECT_EQ(std::string(testcase.attribute("name").value()), v.counterexample->family);
+      EXPECT_NE(std::string(failure.attribute("message").value()).find("circle 0, field px: expected "), std::string::npos);
+      EXPECT_NE(std::string(failure.child_value()).find("got Infinity"), std::string::npos);
+    }
+    skipped += static_cast<bool>(testcase.child("skipped"));
+  }
+  EXPECT_EQ(cases, 17);
+  EXPECT_EQ(names.size(), 17u);
+  EXPECT_EQ(failures, 1);
+  EXPECT_EQ(suite.attribute("tests").as_int(), cases);
+  EXPECT_EQ(suite.attribute("failures").as_int(), failures);
+  EXPECT_EQ(suite.attribute("skipped").as_int(), skipped);
+  EXPECT_EQ(doc.child("testsuites").attribute("failures").as_int(), failures);
+}
+
+// The shards of a run merged: the cases add up to the unsharded run's, each family's too, and of two
+// counterexamples the one of the lower case index wins.
+TEST(report, merges_the_reports_of_shards_into_the_unsharded_runs_cases_and_verdict) {
+  const Verdict whole = verdict_of(spec::resolved_step_rounded);
+  std::vector<std::string> shards, names;
+  for (std::uint64_t i = 0; i < 4; ++i) {
+    const Verdict v = verdict_of(spec::resolved_step_rounded, 3 - i, 4);  // in any order
+    shards.push_back(json_report(v, ""));
+    names.push_back("shard " + std::to_string(3 - i));
+  }
+  const nlohmann::json merged = nlohmann::json::parse(merge_reports(shards, names));
+  const nlohmann::json unsharded = json_of(whole);
+  EXPECT_EQ(merged["verdict"], unsharded["verdict"]);
+  EXPECT_EQ(merged["cases"], unsharded["cases"]);
+  EXPECT_EQ(merged["families"], unsharded["families"]);
+  EXPECT_EQ(merged["shard"], "0,1,2,3/4");
+
+  nlohmann::json early = unsharded, late = unsharded;
+  early["shard"] = "0/2";
+  late["shard"] = "1/2";
+  early["verdict"] = late["verdict"] = "does not conform";
+  early["counterexample"] = {{"case", 3}, {"family", "early"}};
+  late["counterexample"] = {{"case", 40}, {"family", "late"}};
+  const nlohmann::json both = nlohmann::json::parse(merge_reports({late.dump(), early.dump()}, {"late", "early"}));
+  EXPECT_EQ(both["verdict"], "does not conform");
+  EXPECT_EQ(both["counterexample"]["family"], "early");
+  EXPECT_EQ(both["cases"], 2 * unsharded["cases"].get<int>());
+}
+
+TEST(report, refuses_to_merge_reports_of_different_runs_or_a_shard_twice) {
+  const nlohmann::json one = json_of(verdict_of(spec::resolved_step_rounded, 0, 2));
+  nlohmann::json other_seed = one;
+  other_seed["seed"] = 10;
+  other_seed["shard"] = "1/2";
+  const auto refusal = [](const std::vector<std::string>& texts) {
+    const auto e = thrown<ReportError>([&] { merge_reports(texts, {"a.json", "b.json"}); });
+    return e ? std::string(e->what()) : std::string("nothing thrown");
+  };
+  EXPECT_EQ(refusal({one.dump(), other_seed.dump()}),
+            "b.json: \"seed\" is 10, but a.json's is 9: only the shards of one run merge");
+  EXPECT_EQ(refusal({one.dump(), one.dump()}), "b.json: shard 0/2 twice");
+  EXPECT_EQ(refusal({one.dump(), "{"}).substr(0, 25), "b.json: malformed JSON: [");
+  EXPECT_EQ(refusal({one.dump(), "{}"}), "b.json: not a report of circles conform (\"format\": \"circles-conform-report/1\")");
+}
+
+}  // namespace
+}  // namespace circles::cli
