@@ -191,7 +191,10 @@ TEST(pair_list, the_schedule_lengthens_the_horizon_while_pairs_are_cheap_and_sho
   HorizonSchedule s;
   EXPECT_EQ(s.horizon(), HorizonSchedule::kFirstHorizon);
   ASSERT_EQ(s.horizon(), 4u);
-  // At H = 4 a rebuild of 1000 circles costs 8·1000/5 = 1600 pair tests a step. No pairs: far below, ×4.
+  // At H = 4 a rebuild of 1000 circles costs 8·1000/5 = 1600 pair tests a step. No pairs: below half, ×2
+  // (never more, however far below: a fourfold jump overshoots into far pairs).
+  s.update(0, 1000);
+  EXPECT_EQ(s.horizon(), 8u);
   s.update(0, 1000);
   EXPECT_EQ(s.horizon(), 16u);
   // At H = 16 the share is 8000/17 ≈ 471 a step: 200 a step (3400 over the 17 steps) is below half, ×2.
