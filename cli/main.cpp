@@ -236,12 +236,12 @@ int main(int argc, char** argv) {
         conform_options.level = circles::properties::parse_level(level);
         conform_options.profile = circles::properties::parse_profile(profile);
         std::tie(conform_options.shard, conform_options.shards) = circles::conform::parse_shard(shard);
-        if (!only_families.empty()) {
+        if (conform->count("--families") > 0) {
           const auto only = parse_families("--families", only_families, conform_options.profile);
           for (const circles::properties::Family f : circles::properties::families(conform_options.profile))
             if (std::find(only.begin(), only.end(), f) == only.end()) conform_options.skip.push_back(f);
         }
-        if (!skip_families.empty())
+        if (conform->count("--skip-families") > 0)
           conform_options.skip = parse_families("--skip-families", skip_families, conform_options.profile);
       } catch (const std::invalid_argument& e) {
         std::cerr << "circles conform: " << e.what() << "\n";
