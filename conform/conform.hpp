@@ -14,6 +14,9 @@
 // The candidate is asked about up to 64 cases at a time (Candidate::answer_all), in the order and with the ids a
 // case-by-case run would use, so that a candidate program gets several requests per round trip; the verdict,
 // the counterexample and its shrinking are those of the case-by-case run.
+// With Options::keep_going the run goes on past a counterexample: a family stops being asked at its first failing
+// case, the others run to their share of the cases, and each failing family's first case is shrunk, in case
+// order; the verdict is the same for the same seed. Options::skip leaves families out without moving any case.
 #pragma once
 
 #include "conform/candidate.hpp"
