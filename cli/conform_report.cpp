@@ -80,12 +80,10 @@ void print_worlds(const Verdict& v, std::ostream& out) {
   print_world(out, "answered", c.actual);
 }
 
-void print_counterexample(const Verdict& v, const std::filesystem::path& svg, std::ostream& out) {
+// Draws the picture of the run's counterexample where picture_path says, if anywhere, and says where.
+void draw_picture(const Verdict& v, const std::filesystem::path& svg, std::ostream& out) {
   const Counterexample& c = *v.counterexample;
   const properties::Difference& d = c.difference;
-  print_worlds(v, out);
-  if (!c.saved.empty()) out << "saved: " << c.saved.string() << "\n";
-  if (!c.not_saved.empty()) out << "saved: not saved: " << c.not_saved << "\n";
   if (const std::filesystem::path file = picture_path(v, svg); !file.empty()) {
     try {
       conform::write_atomically(file, pictures::counterexample_svg({c.input, c.expected, c.actual, d.circle,
@@ -95,6 +93,14 @@ void print_counterexample(const Verdict& v, const std::filesystem::path& svg, st
       out << "picture: not drawn: " << e.what() << "\n";
     }
   }
+}
+
+void print_counterexample(const Verdict& v, const std::filesystem::path& svg, std::ostream& out) {
+  const Counterexample& c = *v.counterexample;
+  print_worlds(v, out);
+  if (!c.saved.empty()) out << "saved: " << c.saved.string() << "\n";
+  if (!c.not_saved.empty()) out << "saved: not saved: " << c.not_saved << "\n";
+  draw_picture(v, svg, out);
   out << "replay: " << c.replay << "\n";
 }
 
@@ -194,6 +200,7 @@ std::filesystem::path picture_path(const Verdict& verdict, const std::filesystem
 int print_verdict(const Verdict& verdict, const std::filesystem::path& svg, std::ostream& out, std::ostream& err) {
   if (verdict.options.keep_going && verdict.outcome != Outcome::cannot_check) {
     print_table(verdict, out);
+    if (verdict.counterexample) draw_picture(verdict, svg, out);  // of the first unexpected failure
     return verdict.outcome == Outcome::conforms ? 0 : 1;
   }
   switch (verdict.outcome) {

@@ -103,7 +103,8 @@ PY
 keeps_going_and_gates_on_an_expectation_file)
   # The naive example's two mistakes (hypot distance, p + v*(1/60)) reach every family but tangent-after-step
   # and signed-zeros, whose worlds stand still or never meet.
-  run_conform 1 --keep-going --cases 1000 --seed 1 --exec "$naive" --write-expect "$dir/naive.expect"
+  run_conform 1 --keep-going --cases 1000 --seed 1 --exec "$naive" --write-expect "$dir/naive.expect" --svg "$dir/first.svg"
+  grep -q "^picture: $dir/first.svg$" "$dir/out" && [ -s "$dir/first.svg" ] || fail "no picture: $(cat "$dir/out")"
   for family in lattice random-doubles tangency ulp-nudge tie-px tie-p tie-p-vx tie-p-v duplicates incomparable \
       mutual-contacts square-overflow subnormals cancellation zero-radius; do
     grep -q "^  $family  *[0-9][0-9]*  *failed$" "$dir/out" || fail "$family did not fail: $(cat "$dir/out")"
