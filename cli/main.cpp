@@ -285,7 +285,7 @@ int main(int argc, char** argv) {
         }
         if (expectations) apply(verdict, *expectations);
         int status = print_verdict(verdict, svg_file, std::cout, std::cerr);
-        if (expectations)
+        if (expectations && verdict.outcome != Outcome::cannot_check)
           for (const std::string& line : unexpected_passes(verdict, *expectations)) std::cout << line << "\n";
         // The reports for CI, for every verdict; a report that cannot be written makes the run's status 2.
         const std::string text = counterexample_text(verdict);
