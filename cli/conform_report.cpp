@@ -4,6 +4,8 @@
 #include "conform/corpus.hpp"  // write_atomically
 #include "pictures/counterexample_svg.hpp"
 
+#include <algorithm>
+#include <map>
 #include <span>
 #include <sstream>
 #include <string>
@@ -46,18 +48,23 @@ std::string found(const Verdict& v, const Counterexample& c) {
          std::to_string(c.shrink_path.back().size()) + " circles in " + std::to_string(c.shrinks()) + " steps";
 }
 
+// One line of a counterexample: "step 1 of 1, circle 0, field px: expected 0.5 (0x1p-1), got … (hex)".
+std::string difference_line(const Counterexample& c) {
+  const properties::Difference& d = c.difference;
+  return "step " + std::to_string(c.step) + " of " + std::to_string(c.steps) + ", circle " + std::to_string(d.circle) +
+         ", field " + properties::field_name(d.field) + ": expected " + json_number::decimal_and_hex(d.expected) +
+         ", got " + json_number::decimal_and_hex(d.actual);
+}
+
 // The lines that open the report of a counterexample, and its picture's legend.
 std::vector<std::string> head_lines(const Verdict& v) {
   const Counterexample& c = *v.counterexample;
-  const properties::Difference& d = c.difference;
   return {
       "circles conform: " + v.candidate + " does not conform (level " + v.options.level.text() + ", " +
           properties::name(v.options.profile) + " profile)",
       "counterexample: " + found(v, c),
-      "  step " + std::to_string(c.step) + " of " + std::to_string(c.steps) + ", circle " + std::to_string(d.circle) +
-          ", field " + properties::field_name(d.field) + ": expected " + json_number::decimal_and_hex(d.expected) +
-          ", got " + json_number::decimal_and_hex(d.actual),
-      "  which decision: " + d.decision,
+      "  " + difference_line(c),
+      "  which decision: " + c.difference.decision,
   };
 }
 
@@ -73,12 +80,10 @@ void print_worlds(const Verdict& v, std::ostream& out) {
   print_world(out, "answered", c.actual);
 }
 
-void print_counterexample(const Verdict& v, const std::filesystem::path& svg, std::ostream& out) {
+// Draws the picture of the run's counterexample where picture_path says, if anywhere, and says where.
+void draw_picture(const Verdict& v, const std::filesystem::path& svg, std::ostream& out) {
   const Counterexample& c = *v.counterexample;
   const properties::Difference& d = c.difference;
-  print_worlds(v, out);
-  if (!c.saved.empty()) out << "saved: " << c.saved.string() << "\n";
-  if (!c.not_saved.empty()) out << "saved: not saved: " << c.not_saved << "\n";
   if (const std::filesystem::path file = picture_path(v, svg); !file.empty()) {
     try {
       conform::write_atomically(file, pictures::counterexample_svg({c.input, c.expected, c.actual, d.circle,
@@ -88,6 +93,14 @@ void print_counterexample(const Verdict& v, const std::filesystem::path& svg, st
       out << "picture: not drawn: " << e.what() << "\n";
     }
   }
+}
+
+void print_counterexample(const Verdict& v, const std::filesystem::path& svg, std::ostream& out) {
+  const Counterexample& c = *v.counterexample;
+  print_worlds(v, out);
+  if (!c.saved.empty()) out << "saved: " << c.saved.string() << "\n";
+  if (!c.not_saved.empty()) out << "saved: not saved: " << c.not_saved << "\n";
+  draw_picture(v, svg, out);
   out << "replay: " << c.replay << "\n";
 }
 
@@ -136,6 +149,35 @@ void print_conforms(const Verdict& v, std::ostream& out) {
   }
 }
 
+// --keep-going: a row per family, its cases checked, its status and, for a family that failed, its shrunk
+// counterexample in one line (the field, expected, got, which decision) and its replay line.
+void print_table(const Verdict& v, std::ostream& out) {
+  const conform::Options& o = v.options;
+  out << "circles conform: " << v.candidate << " " << name(v.outcome) << ": " << v.cases << " cases, level "
+      << o.level.text() << ", seed " << o.seed << ", " << properties::name(o.profile) << " profile";
+  if (o.shards > 1) out << ", shard " << o.shard << "/" << o.shards;
+  out << "\n";
+  std::size_t width = 6;
+  for (const conform::FamilyResult& f : v.families) width = std::max(width, std::string(properties::name(f.family)).size());
+  const auto pad = [](std::string text, std::size_t n) { return text + std::string(n > text.size() ? n - text.size() : 0, ' '); };
+  out << "  " << pad("family", width) << "  " << pad("cases", 6) << "  status\n";
+  std::map<std::string, int> counts;
+  for (const conform::FamilyResult& f : v.families) {
+    ++counts[name(f.status)];
+    out << "  " << pad(properties::name(f.family), width) << "  " << pad(std::to_string(f.checked), 6) << "  "
+        << name(f.status) << "\n";
+    if (!f.counterexample) continue;
+    const Counterexample& c = *f.counterexample;
+    const std::string indent(width + 12, ' ');
+    out << indent << difference_line(c) << "; which decision: " << c.difference.decision << "\n"
+        << indent << "replay: " << c.replay << "\n";
+    if (!c.saved.empty()) out << indent << "saved: " << c.saved.string() << "\n";
+  }
+  std::string summary;
+  for (const auto& [status, n] : counts) summary += (summary.empty() ? "" : ", ") + std::to_string(n) + " " + status;
+  out << "  families: " << summary << "\n";
+}
+
 }  // namespace
 
 std::string counterexample_text(const Verdict& verdict) {
@@ -156,6 +198,11 @@ std::filesystem::path picture_path(const Verdict& verdict, const std::filesystem
 }
 
 int print_verdict(const Verdict& verdict, const std::filesystem::path& svg, std::ostream& out, std::ostream& err) {
+  if (verdict.options.keep_going && verdict.outcome != Outcome::cannot_check) {
+    print_table(verdict, out);
+    if (verdict.counterexample) draw_picture(verdict, svg, out);  // of the first unexpected failure
+    return verdict.outcome == Outcome::conforms ? 0 : 1;
+  }
   switch (verdict.outcome) {
     case Outcome::conforms:
       print_conforms(verdict, out);

@@ -22,7 +22,10 @@ std::string counterexample_text(const conform::Verdict& verdict);
 // Prints the verdict on `out` ("circles conform: … conforms: 1000 cases, …" with the cases per family, or the
 // counterexample with its worlds, where it was saved, its picture and its replay line), drawing the picture
 // to picture_path(verdict, svg); a verdict that cannot check goes to `err` as "circles conform: reason".
-// Returns the exit status: 0, 1 or 2.
+// With --keep-going (Options::keep_going) it prints a table instead: a row per family with its cases, status
+// and, for a family that failed, its counterexample in a line and its replay line, and draws the picture of the
+// run's counterexample (the first failure not expected). Returns the exit status:
+// 0, 1 or 2.
 int print_verdict(const conform::Verdict& verdict, const std::filesystem::path& svg, std::ostream& out,
                   std::ostream& err);
 

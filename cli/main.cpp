@@ -8,6 +8,7 @@
 #include "conform/check_trace.hpp"
 #include "conform/conform.hpp"
 #include "conform/engines.hpp"
+#include "conform/expect.hpp"
 #include "cli/run.hpp"
 #include "cli/vectors.hpp"
 #include "conform/serve.hpp"
@@ -17,7 +18,9 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 #include <filesystem>
 #include <cstdint>
 #include <tuple>
@@ -163,6 +166,17 @@ int main(int argc, char** argv) {
   std::string report_file, junit_file;
   conform->add_option("--report", report_file, "Also write the verdict as JSON to FILE (docs/conform.md, Reports for CI)");
   conform->add_option("--junit", junit_file, "Also write the verdict as JUnit XML to FILE, a test case per family");
+  conform->add_flag("--keep-going", conform_options.keep_going,
+                    "Check every family, shrink a counterexample per failing family, and print a row per family");
+  std::string only_families, skip_families, expect_file, write_expect_file;
+  CLI::Option* families_option =
+      conform->add_option("--families", only_families, "Check only these families, A,B,... (docs/conform.md)");
+  conform->add_option("--skip-families", skip_families, "Check every family but these, A,B,...")->excludes(families_option);
+  conform->add_option("--expect", expect_file,
+                      "Known failures, FAMILY fail REASON a line: failing them passes, passing them fails (implies "
+                      "--keep-going)");
+  conform->add_option("--write-expect", write_expect_file,
+                      "Write this run's failing families to FILE as an expectation file (implies --keep-going)");
 
   CLI::App* report = app.add_subcommand("report", "Work with the JSON reports of circles conform --report");
   report->require_subcommand(1, 1);
@@ -222,6 +236,13 @@ int main(int argc, char** argv) {
         conform_options.level = circles::properties::parse_level(level);
         conform_options.profile = circles::properties::parse_profile(profile);
         std::tie(conform_options.shard, conform_options.shards) = circles::conform::parse_shard(shard);
+        if (conform->count("--families") > 0) {
+          const auto only = parse_families("--families", only_families, conform_options.profile);
+          for (const circles::properties::Family f : circles::properties::families(conform_options.profile))
+            if (std::find(only.begin(), only.end(), f) == only.end()) conform_options.skip.push_back(f);
+        }
+        if (conform->count("--skip-families") > 0)
+          conform_options.skip = parse_families("--skip-families", skip_families, conform_options.profile);
       } catch (const std::invalid_argument& e) {
         std::cerr << "circles conform: " << e.what() << "\n";
         return 2;
@@ -231,6 +252,14 @@ int main(int argc, char** argv) {
         return 2;
       }
       if (*case_option) conform_options.only_case = only_case;
+      std::optional<Expectations> expectations;
+      try {
+        if (!expect_file.empty()) expectations = read_expectations(expect_file, conform_options.profile);
+      } catch (const ExpectError& e) {
+        std::cerr << "circles conform: --expect: " << e.what() << "\n";
+        return 2;
+      }
+      if (expectations || !write_expect_file.empty()) conform_options.keep_going = true;
       conform_options.save = save_dir;
       // A --svg file that cannot be written is a usage error, found before any case runs.
       if (const std::filesystem::path svg = svg_file; !svg.empty()) {
@@ -254,12 +283,20 @@ int main(int argc, char** argv) {
         } catch (const BrokenCandidate& e) {  // it could not start: a verdict too, for the reports
           verdict = unchecked("the program `" + exec + "`", conform_options, e.what());
         }
-        const int status = print_verdict(verdict, svg_file, std::cout, std::cerr);
+        if (expectations) apply(verdict, *expectations);
+        int status = print_verdict(verdict, svg_file, std::cout, std::cerr);
+        if (expectations && verdict.outcome != Outcome::cannot_check)
+          for (const std::string& line : unexpected_passes(verdict, *expectations)) std::cout << line << "\n";
         // The reports for CI, for every verdict; a report that cannot be written makes the run's status 2.
         const std::string text = counterexample_text(verdict);
         try {
           if (!report_file.empty()) write_report(report_file, "--report", json_report(verdict, text));
           if (!junit_file.empty()) write_report(junit_file, "--junit", junit_report(verdict, text));
+          // The expectation file of a run that could check, whole or not at all.
+          if (!write_expect_file.empty() && verdict.outcome != Outcome::cannot_check) {
+            write_report(write_expect_file, "--write-expect", expectations_text(verdict));
+            std::cout << "expectations: " << write_expect_file << "\n";
+          }
         } catch (const OutputError& e) {
           std::cerr << "circles conform: " << e.what() << "\n";
           return 2;

@@ -18,6 +18,7 @@ namespace {
 
 using conform::Counterexample;
 using conform::FamilyResult;
+using conform::FamilyStatus;
 using conform::Verdict;
 using formats::Circles;
 namespace json_number = formats::json_number;
@@ -94,6 +95,14 @@ std::string seconds(double s) {
   return text;
 }
 
+// A family's status over shards: it failed if it failed in any (unexpectedly, then as expected), else it
+// passed unexpectedly if it did in any, else passed if it passed in one; not reached and skipped rank last.
+int status_rank(const std::string& status) {
+  static const char* const order[] = {"", "skipped", "not reached", "passed", "unexpected pass", "expected failure",
+                                      "failed"};
+  return static_cast<int>(std::find(std::begin(order), std::end(order), status) - std::begin(order));
+}
+
 }  // namespace
 
 std::string json_report(const Verdict& v, const std::string& text) {
@@ -124,15 +133,31 @@ std::string junit_report(const Verdict& v, const std::string& text) {
   for (const FamilyResult& f : v.families) {
     const std::string family = properties::name(f.family);
     cases += "    <testcase classname=\"circles.conform\" name=\"" + xml(family) + "\" time=\"0\">\n";
-    if (f.has_counterexample && v.counterexample) {
+    // The family's counterexample: the run's (printed in full, `text`), or with --keep-going its own.
+    const Counterexample* c = f.has_counterexample && v.counterexample ? &*v.counterexample
+                              : f.counterexample                       ? &*f.counterexample
+                                                                       : nullptr;
+    const auto message = [](const Counterexample& x) {
+      const properties::Difference& d = x.difference;
+      return "step " + std::to_string(x.step) + " of " + std::to_string(x.steps) + ", circle " +
+             std::to_string(d.circle) + ", field " + properties::field_name(d.field) + ": expected " +
+             json_number::decimal_and_hex(d.expected) + ", got " + json_number::decimal_and_hex(d.actual);
+    };
+    if (f.status == FamilyStatus::failed && c) {
       ++failures;
-      const properties::Difference& d = v.counterexample->difference;
-      const std::string message = "step " + std::to_string(v.counterexample->step) + " of " +
-                                  std::to_string(v.counterexample->steps) + ", circle " + std::to_string(d.circle) +
-                                  ", field " + properties::field_name(d.field) + ": expected " +
-                                  json_number::decimal_and_hex(d.expected) + ", got " +
-                                  json_number::decimal_and_hex(d.actual);
-      cases += "      <failure type=\"does not conform\" message=\"" + xml(message) + "\">" + xml(text) + "</failure>\n";
+      const std::string body = f.has_counterexample ? text : message(*c) + "\nreplay: " + c->replay + "\n";
+      cases += "      <failure type=\"does not conform\" message=\"" + xml(message(*c)) + "\">" + xml(body) + "</failure>\n";
+    } else if (f.status == FamilyStatus::unexpected_pass) {
+      ++failures;
+      const std::string why = "unexpected pass: the expectation file lists " + family +
+                              " as failing, and it passed; delete its line";
+      cases += "      <failure type=\"unexpected pass\" message=\"" + xml(why) + "\">" + xml(why) + "</failure>\n";
+    } else if (f.status == FamilyStatus::expected_failure) {
+      ++skipped;
+      cases += "      <skipped message=\"" + xml("expected failure" + (c ? ": " + message(*c) : std::string())) + "\"/>\n";
+    } else if (f.status == FamilyStatus::skipped) {
+      ++skipped;
+      cases += "      <skipped message=\"skipped: left out by --families or --skip-families\"/>\n";
     } else if (v.outcome == conform::Outcome::cannot_check && f.checked == 0) {
       ++errors;
       cases += "      <error type=\"cannot check\" message=\"" + xml(v.error) + "\">" + xml(v.error) + "</error>\n";
@@ -220,15 +245,18 @@ std::string merge_reports(const std::vector<std::string>& texts, const std::vect
       else at->second += count.get<std::uint64_t>();
     }
     for (const auto& [family, s] : r["family_status"].items()) {
+      const std::string one = s.is_string() ? s.get<std::string>() : "";
+      if (!conform::parse_family_status(one))
+        throw ReportError(names[&r - reports.data()] + ": \"family_status\": " + family + " is " + s.dump() +
+                          ", not a status of a family");
       std::string& merged = status[family];
-      const std::string one = s.get<std::string>();
-      if (one == "failed" || merged == "failed") merged = "failed";
-      else if (one == "passed" || merged == "passed") merged = "passed";
-      else merged = one;
+      if (status_rank(one) > status_rank(merged)) merged = one;
     }
   }
+  bool family_fails = false;
+  for (const auto& [family, s] : status) family_fails = family_fails || s == "failed" || s == "unexpected pass";
   if (!error.is_null()) verdict = "cannot check";
-  else if (!counterexample.is_null()) verdict = "does not conform";
+  else if (!counterexample.is_null() || family_fails) verdict = "does not conform";
   std::string shard_list;
   for (const unsigned long long i : shards) shard_list += (shard_list.empty() ? "" : ",") + std::to_string(i);
   out["format"] = kFormat;

@@ -9,7 +9,8 @@
 //    "seed": 3, "shard": "0/1", "level": "exact", "profile": "resolved", "steps": 1,
 //    "cases": 1000, "skipped": 0, "cut_short": 0, "replayed": 0,
 //    "families": {"lattice": 59, ...},                  cases checked per family, in the profile's order
-//    "family_status": {"lattice": "passed", ...},       "passed", "failed", "not reached" (issue 14 adds more)
+//    "family_status": {"lattice": "passed", ...},       "passed", "failed", "expected failure", "unexpected pass",
+//                                                       "skipped" or "not reached" (conform::FamilyStatus)
 //    "counterexample": null | {"family": "ulp-nudge", "case": 3 | null (a stored file), "stored": null | "F.json",
 //        "step": 1, "steps": 1, "world": [[...]], "expected": [[...]], "received": [[...]],
 //        "difference": {"circle": 0, "field": "px", "expected": 0.5, "received": "Infinity", "decision": "..."},
@@ -19,8 +20,9 @@
 // or "-Infinity". A merged report's "shard" lists the shards it merged, "0,1,2,3/4".
 //
 // The JUnit XML: one <testsuite> of one <testcase> per family, with a <failure> (its message the line that
-// names the field, its text the printed counterexample) in the counterexample's family, <skipped> in a family
-// not reached, and an <error> in each family not checked when the run cannot check.
+// names the field, its text the printed counterexample) in each family that failed (with --keep-going, more
+// than one) and in each unexpected pass, <skipped> in an expected failure, a skipped family and a family not
+// reached, and an <error> in each family not checked when the run cannot check.
 //
 // Every file is written to a temporary name beside it and renamed (formats/output_file.hpp): whole or not at all.
 #pragma once
@@ -47,8 +49,9 @@ std::string junit_report(const conform::Verdict& verdict, const std::string& tex
 // The reports of shards of one run (the same candidate, seed, level, profile, steps and shard count, each
 // shard once), as one: cases, skipped and per-family counts add up; the verdict is "cannot check" if any is,
 // else "does not conform" if any has a counterexample, the one of the lowest case index (a stored
-// counterexample, replayed before any case, lowest of all); a family failed if it failed in any shard, passed
-// if it passed in one. Throws ReportError. `names` name the texts in messages.
+// counterexample, replayed before any case, lowest of all), or if a family failed or passed unexpectedly; a
+// family's status is the first of failed, expected failure, unexpected pass, passed, not reached, skipped that
+// it has in any shard. Throws ReportError. `names` name the texts in messages.
 std::string merge_reports(const std::vector<std::string>& texts, const std::vector<std::string>& names);
 
 // `circles report merge OUT IN...`: merges the reports IN into OUT. Returns the exit status of the merged

@@ -196,13 +196,46 @@ const char* name(Outcome outcome) {
   return "cannot check";
 }
 
+namespace {
+constexpr FamilyStatus kStatuses[] = {FamilyStatus::passed,         FamilyStatus::failed,  FamilyStatus::expected_failure,
+                                      FamilyStatus::unexpected_pass, FamilyStatus::skipped, FamilyStatus::not_reached};
+}  // namespace
+
 const char* name(FamilyStatus status) {
   switch (status) {
     case FamilyStatus::passed: return "passed";
     case FamilyStatus::failed: return "failed";
+    case FamilyStatus::expected_failure: return "expected failure";
+    case FamilyStatus::unexpected_pass: return "unexpected pass";
+    case FamilyStatus::skipped: return "skipped";
     case FamilyStatus::not_reached: break;
   }
   return "not reached";
+}
+
+std::optional<FamilyStatus> parse_family_status(std::string_view text) {
+  for (const FamilyStatus s : kStatuses)
+    if (text == name(s)) return s;
+  return std::nullopt;
+}
+
+std::vector<properties::Family> parse_families(std::string_view option, std::string_view list, Profile profile) {
+  const std::span<const properties::Family> known = properties::families(profile);
+  std::vector<properties::Family> out;
+  for (std::size_t start = 0; start <= list.size();) {
+    const std::size_t comma = std::min(list.find(',', start), list.size());
+    const std::string_view item = list.substr(start, comma - start);
+    const auto at = std::find_if(known.begin(), known.end(), [&](properties::Family f) { return item == properties::name(f); });
+    if (at == known.end()) {
+      std::string names;
+      for (const properties::Family f : known) names += (names.empty() ? "" : ", ") + std::string(properties::name(f));
+      throw std::invalid_argument(std::string(option) + ": unknown family \"" + std::string(item) + "\"; the families of the " +
+                                  properties::name(profile) + " profile are " + names);
+    }
+    if (std::find(out.begin(), out.end(), *at) == out.end()) out.push_back(*at);
+    start = comma + 1;
+  }
+  return out;
 }
 
 namespace {
@@ -215,9 +248,9 @@ class Run {
 
   void operator()() {
     replay_corpus();
-    if (verdict_.counterexample) return;
+    if (verdict_.counterexample && !options_.keep_going) return;
     check_cases();
-    if (verdict_.counterexample) return;
+    if (verdict_.counterexample && !options_.keep_going) return;
     candidate_.finish();
     require_every_family();
   }
@@ -228,7 +261,13 @@ class Run {
            (options_.profile == Profile::literal ? " --profile literal" : "");
   }
 
-  void fail(Failure failure, Counterexample c) {
+  bool skipped(properties::Family family) const {
+    return std::find(options_.skip.begin(), options_.skip.end(), family) != options_.skip.end();
+  }
+
+  // Records the counterexample of the family `result` (none: a stored file of no known family); the run's
+  // counterexample is its first.
+  void fail(Failure failure, Counterexample c, FamilyResult* result) {
     c.step = failure.step;
     c.steps = failure.steps;
     c.input = std::move(failure.input);
@@ -236,7 +275,19 @@ class Run {
     c.actual = std::move(failure.actual);
     c.difference = std::move(failure.difference);
     verdict_.outcome = Outcome::does_not_conform;
-    verdict_.counterexample = std::move(c);
+    const bool first = !verdict_.counterexample;
+    if (result) {
+      result->status = FamilyStatus::failed;
+      result->has_counterexample = first;
+      result->counterexample = c;
+    }
+    if (first) verdict_.counterexample = std::move(c);
+  }
+
+  FamilyResult* result_of(const std::string& family) {
+    for (FamilyResult& f : verdict_.families)
+      if (properties::name(f.family) == family) return &f;
+    return nullptr;
   }
 
   // 1. The corpus, replayed first.
@@ -249,6 +300,8 @@ class Run {
       throw ConformError(std::string("--save: ") + e.what());
     }
     for (const auto& [file, stored] : corpus) {
+      FamilyResult* result = result_of(stored.family);
+      if (result && (skipped(result->family) || result->status == FamilyStatus::failed)) continue;
       Ending ending = Ending::checked;
       std::optional<Failure> failure = checker_.run(stored.world, options_.steps, ending);
       if (ending == Ending::no_reference_at_w0) {
@@ -265,13 +318,8 @@ class Run {
       c.circles_before = stored.world.size();
       c.shrink_path = {stored.world};
       c.replay = "--save " + options_.save.string() + replay_options() + " (the corpus is replayed first)";
-      for (FamilyResult& f : verdict_.families)
-        if (properties::name(f.family) == stored.family) {
-          f.has_counterexample = true;
-          f.status = FamilyStatus::failed;
-        }
-      fail(std::move(*failure), std::move(c));
-      return;
+      fail(std::move(*failure), std::move(c), result);
+      if (!options_.keep_going) return;
     }
   }
 
@@ -281,50 +329,66 @@ class Run {
     const std::uint64_t F = families.size();
     rc::Random stream(options_.seed);
     // The cases of this run, checked kBatchCases at a time (Checker::run_all), then counted and, for the first
-    // that fails, shrunk, in order: the verdict is the sequential run's.
+    // that fails (with --keep-going, of each family), shrunk, in order: the verdict is the sequential run's.
     struct Case {
       std::uint64_t index;
       std::size_t family;
       rc::Shrinkable<Circles> world;
     };
+    struct Failing {
+      Case drawn;
+      std::uint64_t steps;
+      Failure failure;
+    };
     std::vector<Case> batch;
     std::vector<Chain> chains;
-    // Checks the batch; returns the index of its failing case, if one fails.
-    const auto check_batch = [&]() -> std::optional<std::size_t> {
-      const std::size_t failed = checker_.run_all(chains);
-      for (std::size_t k = 0; k < chains.size() && k <= failed; ++k) {
-        FamilyResult& family = verdict_.families[batch[k].family];
-        ++verdict_.cases;
-        ++family.drawn;
-        if (chains[k].ending() == Ending::no_reference_at_w0) ++verdict_.skipped;
-        else ++family.checked;
-        verdict_.cut_short += chains[k].ending() == Ending::no_reference_later;
+    std::vector<Failing> failing;  // the first failing case of each family that fails, in case order
+    // Checks the batch, counting its cases up to the first that fails, or with --keep-going all of them: a case
+    // of a family that failed earlier in the batch is asked and counted, but not shrunk.
+    const auto check_batch = [&]() {
+      for (std::size_t from = 0; from < chains.size();) {
+        const std::size_t failed = from + checker_.run_all(std::span(chains).subspan(from));
+        for (std::size_t k = from; k < chains.size() && k <= failed; ++k) {
+          FamilyResult& family = verdict_.families[batch[k].family];
+          ++verdict_.cases;
+          ++family.drawn;
+          if (chains[k].ending() == Ending::no_reference_at_w0) ++verdict_.skipped;
+          else ++family.checked;
+          verdict_.cut_short += chains[k].ending() == Ending::no_reference_later;
+        }
+        if (failed == chains.size()) break;
+        FamilyResult& family = verdict_.families[batch[failed].family];
+        if (family.status != FamilyStatus::failed) {
+          family.status = FamilyStatus::failed;
+          failing.push_back({batch[failed], chains[failed].steps(), std::move(*chains[failed].failure())});
+        }
+        if (!options_.keep_going) return;
+        from = failed + 1;
       }
-      if (failed < chains.size()) return failed;
       batch.clear();
       chains.clear();
-      return std::nullopt;
     };
     // --case I replays case I whatever --cases says: the replay line of a report does not repeat it.
     const std::uint64_t end = options_.only_case ? *options_.only_case + 1 : options_.cases;
-    std::optional<std::size_t> failed;
-    for (std::uint64_t c = 0; c < end && !failed; ++c) {
+    for (std::uint64_t c = 0; c < end && (failing.empty() || options_.keep_going); ++c) {
       const rc::Random random = stream.split();  // case c's stream, whichever cases this run checks
       if (options_.only_case ? c != *options_.only_case : (c / F) % options_.shards != options_.shard) continue;
       const std::size_t family = cases_.family(c);
+      // A skipped family, and with --keep-going one that failed already (here or in the corpus), is not asked.
+      if (skipped(families[family]) || verdict_.families[family].status == FamilyStatus::failed) continue;
       // At least as far as the family's boundary: tangent-after-step's tangency is decided at the second step.
       const std::uint64_t steps = std::max(options_.steps, properties::steps_to_decide(families[family]));
       batch.push_back(Case{c, family, cases_.world(c, random)});
       chains.emplace_back(batch.back().world.value(), steps, options_.level);
-      if (batch.size() == kBatchCases) failed = check_batch();
+      if (batch.size() == kBatchCases) check_batch();
     }
-    if (!failed && !batch.empty()) failed = check_batch();
-    if (!failed) return;
+    if (!batch.empty() && (failing.empty() || options_.keep_going)) check_batch();
+    for (Failing& f : failing) shrink(std::move(f.drawn.world), f.drawn.index, f.drawn.family, f.steps, std::move(f.failure));
+  }
 
-    const auto& [c, family, drawn_world] = batch[*failed];
-    rc::Shrinkable<Circles> world = drawn_world;
-    const std::uint64_t steps = chains[*failed].steps();
-    Failure failure = std::move(*chains[*failed].failure());
+  // Shrinks case c's failure (of the family with index `family`) and records it as the family's counterexample.
+  void shrink(rc::Shrinkable<Circles> world, std::uint64_t c, std::size_t family, std::uint64_t steps, Failure failure) {
+    const std::span<const properties::Family> families = cases_.families();
     Counterexample counterexample;
     counterexample.shrink_path = {world.value()};
     counterexample.circles_before = world.value().size();
@@ -354,9 +418,6 @@ class Run {
       }
     }
     if (options_.simplify) simplify(world.value(), steps, failure, counterexample);
-    FamilyResult& result = verdict_.families[family];
-    result.status = FamilyStatus::failed;
-    result.has_counterexample = true;
     counterexample.family = properties::name(families[family]);
     counterexample.case_index = c;
     counterexample.replay = "--seed " + std::to_string(options_.seed) + " --case " + std::to_string(c) + replay_options();
@@ -370,7 +431,7 @@ class Run {
         counterexample.not_saved = e.what();
       }
     }
-    fail(std::move(failure), std::move(counterexample));
+    fail(std::move(failure), std::move(counterexample), &verdict_.families[family]);
   }
 
   // After shrinking: each number of the world, in turn, replaced by its simplest value (simpler_values) with
@@ -410,7 +471,7 @@ class Run {
     if (options_.only_case || options_.cases == 0) return;
     const std::uint64_t F = verdict_.families.size();
     for (const FamilyResult& f : verdict_.families) {
-      if (f.checked > 0) continue;
+      if (f.checked > 0 || skipped(f.family) || f.status == FamilyStatus::failed) continue;
       const std::string family = properties::name(f.family);
       if (f.drawn == 0)
         throw ConformError("no case of the family " + family + " was checked: each round of " + std::to_string(F) +
@@ -442,7 +503,7 @@ Verdict unchecked(std::string candidate, const Options& options, std::string err
   verdict.options = options;
   verdict.error = std::move(error);
   for (const properties::Family f : properties::families(options.profile))
-    verdict.families.push_back({f, 0, 0, FamilyStatus::not_reached, false});
+    verdict.families.push_back({f, 0, 0, FamilyStatus::not_reached, false, std::nullopt});
   return verdict;
 }
 
@@ -470,7 +531,8 @@ Verdict check(Candidate& candidate, const Options& options) {
   // A family with no checked case did not pass: the run stopped (a counterexample, a fault) before it, or
   // replayed one case or the corpus alone.
   for (FamilyResult& f : verdict.families)
-    if (f.status != FamilyStatus::failed) f.status = f.checked > 0 ? FamilyStatus::passed : FamilyStatus::not_reached;
+    if (std::find(options.skip.begin(), options.skip.end(), f.family) != options.skip.end()) f.status = FamilyStatus::skipped;
+    else if (f.status != FamilyStatus::failed) f.status = f.checked > 0 ? FamilyStatus::passed : FamilyStatus::not_reached;
   verdict.elapsed = std::chrono::steady_clock::now() - start;
   return verdict;
 }

@@ -14,10 +14,14 @@
 // The candidate is asked about up to 64 cases at a time (Candidate::answer_all), in the order and with the ids a
 // case-by-case run would use, so that a candidate program gets several requests per round trip; the verdict,
 // the counterexample and its shrinking are those of the case-by-case run.
+// With Options::keep_going the run goes on past a counterexample: a family stops being asked at its first failing
+// case, the others run to their share of the cases, and each failing family's first case is shrunk, in case
+// order; the verdict is the same for the same seed. Options::skip leaves families out without moving any case.
 #pragma once
 
 #include "conform/candidate.hpp"
 #include "formats/protocol.hpp"
+#include "properties/boundaries.hpp"
 #include "properties/conformance.hpp"
 
 #include <chrono>
@@ -30,8 +34,6 @@
 #include <vector>
 
 namespace circles::conform {
-
-using formats::Circles;
 
 using formats::Circles;
 using properties::compare;
@@ -54,7 +56,18 @@ struct Options {
   // After shrinking, simplify each number of the counterexample while it still fails: toward 0, integers and
   // short binary fractions (docs/conform.md, "Counterexamples a person can read"). Off only to measure it.
   bool simplify = true;
+  // Go on after a counterexample (--keep-going): every family is checked up to its share of the cases, and one
+  // counterexample is shrunk per failing family (FamilyResult::counterexample). A family stops being asked at
+  // its first failing case. Off: the run stops at its first counterexample.
+  bool keep_going = false;
+  // Families not checked (--families, --skip-families): their cases are neither drawn nor asked, their stored
+  // counterexamples not replayed, and their status is `skipped`. The other cases keep their worlds.
+  std::vector<properties::Family> skip{};
 };
+
+// "A,B,..." → those families of `profile`, for --families and --skip-families. Throws std::invalid_argument
+// naming `option`, the unknown name and the known families.
+std::vector<properties::Family> parse_families(std::string_view option, std::string_view list, Profile profile);
 
 // "i/n" → shard i of n (0 ≤ i < n). Throws std::invalid_argument with a message for --shard.
 std::pair<std::uint64_t, std::uint64_t> parse_shard(std::string_view text);
@@ -71,11 +84,15 @@ class ConformError : public std::runtime_error {
 enum class Outcome { conforms, does_not_conform, cannot_check };
 const char* name(Outcome outcome);
 
-// How one family fared. Issue 14's --keep-going adds expected_failure and unexpected_pass (against an
-// expectation file); a run that stops at its first counterexample marks the families it did not reach
+// How one family fared: passed or failed; against an expectation file (conform/expect.hpp), a listed family
+// that failed is an expected_failure and one that passed an unexpected_pass; a family left out by
+// Options::skip is skipped; a run that stops at its first counterexample marks the families it did not reach
 // `not_reached`.
-enum class FamilyStatus { passed, failed, not_reached };
-const char* name(FamilyStatus status);  // "passed", "failed", "not reached"
+enum class FamilyStatus { passed, failed, expected_failure, unexpected_pass, skipped, not_reached };
+// "passed", "failed", "expected failure", "unexpected pass", "skipped", "not reached"
+const char* name(FamilyStatus status);
+// The status of that name; nothing for another text.
+std::optional<FamilyStatus> parse_family_status(std::string_view text);
 
 // The first answer that differs, with how it was found and how to see it again.
 struct Counterexample {
@@ -97,12 +114,13 @@ struct Counterexample {
 };
 
 // One family's record: its cases drawn and checked (a drawn case is skipped when its first world has no
-// expected answer), its status, and its counterexample, if the run's is of this family.
+// expected answer), its status, and its counterexample, if it failed.
 struct FamilyResult {
   properties::Family family;
   std::uint64_t drawn = 0, checked = 0;
   FamilyStatus status = FamilyStatus::passed;
   bool has_counterexample = false;  // Verdict::counterexample is this family's
+  std::optional<Counterexample> counterexample;  // this family's shrunk counterexample, if it failed
 };
 
 struct Verdict {
@@ -114,7 +132,9 @@ struct Verdict {
   std::uint64_t cut_short = 0;   // chains that ended early at a world with no expected answer
   std::uint64_t replayed = 0, not_replayed = 0;  // corpus files replayed, and those outside the profile's domain
   std::vector<FamilyResult> families;  // every family of the profile, in order
-  std::optional<Counterexample> counterexample;  // set when the outcome is does_not_conform
+  // The run's first counterexample (the lowest case; a stored one first), set when a family failed. With
+  // --keep-going each failing family has its own in FamilyResult::counterexample.
+  std::optional<Counterexample> counterexample;
   std::string error;                             // why, when the outcome is cannot_check
   std::chrono::duration<double> elapsed{};       // wall time of the check
   std::uint64_t checked() const { return cases - skipped; }

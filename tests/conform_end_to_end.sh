@@ -100,6 +100,47 @@ PY
   grep -q "^circles conform: --report $dir/no/such/r.json: cannot create " "$dir/err" || fail "$(cat "$dir/err")"
   [ ! -e "$dir/no" ] || fail "something was written"
   ;;
+keeps_going_and_gates_on_an_expectation_file)
+  # The naive example's two mistakes (hypot distance, p + v*(1/60)) reach every family but tangent-after-step
+  # and signed-zeros in seed 1's 1000 cases: on their worlds there its answers are the nearest doubles.
+  run_conform 1 --keep-going --cases 1000 --seed 1 --exec "$naive" --write-expect "$dir/naive.expect" --svg "$dir/first.svg"
+  grep -q "^picture: $dir/first.svg$" "$dir/out" && [ -s "$dir/first.svg" ] || fail "no picture: $(cat "$dir/out")"
+  for family in lattice random-doubles tangency ulp-nudge tie-px tie-p tie-p-vx tie-p-v duplicates incomparable \
+      mutual-contacts square-overflow subnormals cancellation zero-radius; do
+    grep -q "^  $family  *[0-9][0-9]*  *failed$" "$dir/out" || fail "$family did not fail: $(cat "$dir/out")"
+    grep -q "^$family fail TODO: why it fails$" "$dir/naive.expect" || fail "$family is not in the file: $(cat "$dir/naive.expect")"
+  done
+  for family in tangent-after-step signed-zeros; do
+    grep -q "^  $family  *[0-9][0-9]*  *passed$" "$dir/out" || fail "$family did not pass: $(cat "$dir/out")"
+  done
+  grep -q "^  families: 15 failed, 2 passed$" "$dir/out" || fail "no summary: $(cat "$dir/out")"
+  [ "$(grep -c "replay: --seed 1 --case" "$dir/out")" -eq 15 ] || fail "not a replay line per failure: $(cat "$dir/out")"
+  # With the file it wrote, the naive example passes the gate.
+  run_conform 0 --cases 1000 --seed 1 --exec "$naive" --expect "$dir/naive.expect"
+  grep -q "^  families: 15 expected failure, 2 passed$" "$dir/out" || fail "no expected failures: $(cat "$dir/out")"
+  # The exact example, with the same file: an unexpected pass for each line.
+  run_conform 1 --cases 1000 --seed 1 --exec "python3 $source_dir/examples/python/step.py" --expect "$dir/naive.expect"
+  [ "$(grep -c ": unexpected pass (.* cases checked): delete its line, $dir/naive.expect:" "$dir/out")" -eq 15 ] ||
+    fail "not 15 unexpected passes: $(cat "$dir/out")"
+  # A wrong implementation whose failures the file does not list (float32 fails signed-zeros too).
+  run_conform 1 --cases 1000 --seed 1 --exec "python3 $source_dir/examples/python/step_float32.py" \
+    --expect "$dir/naive.expect"
+  grep -q "^  signed-zeros  *[0-9][0-9]*  *failed$" "$dir/out" || fail "signed-zeros did not fail: $(cat "$dir/out")"
+  ;;
+exits_2_for_unknown_families_and_bad_expectation_files)
+  run_conform 2 --families lattice,sideways --exec true
+  grep -q "^circles conform: --families: unknown family \"sideways\"; the families of the resolved profile are lattice, random-doubles, " "$dir/err" ||
+    fail "unexpected message: $(cat "$dir/err")"
+  run_conform 2 --skip-families "" --exec true
+  grep -q "^circles conform: --skip-families: unknown family \"\"" "$dir/err" || fail "unexpected message: $(cat "$dir/err")"
+  printf '# known failures\n\nfail rounding\n' >"$dir/bad.expect"
+  run_conform 2 --expect "$dir/bad.expect" --exec true
+  [ "$(cat "$dir/err")" = "circles conform: --expect: $dir/bad.expect:3: the entry names no family: expected FAMILY fail REASON" ] ||
+    fail "unexpected message: $(cat "$dir/err")"
+  # A run that cannot write its expectation file leaves nothing behind and exits 2.
+  run_conform 2 --cases 100 --seed 1 --exec "$naive" --write-expect "$dir/missing/naive.expect"
+  [ ! -e "$dir/missing" ] || fail "wrote $dir/missing"
+  ;;
 replays_the_committed_corpus_with_each_engine)
   # A copy, so that a failure writes its picture there rather than into the source tree.
   cp -r "$source_dir/tests/corpus/conform" "$dir/corpus"

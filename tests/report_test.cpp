@@ -6,6 +6,7 @@
 
 #include "conform/candidate.hpp"
 #include "conform/engines.hpp"
+#include "conform/expect.hpp"
 #include "spec/oracle.hpp"
 #include "tests/function_candidate.hpp"
 #include "tests/thrown.hpp"
@@ -161,6 +162,77 @@ TEST(report, refuses_to_merge_reports_of_different_runs_or_a_shard_twice) {
   EXPECT_EQ(refusal({one.dump(), one.dump()}), "b.json: shard 0/2 twice");
   EXPECT_EQ(refusal({one.dump(), "{"}).substr(0, 25), "b.json: malformed JSON: [");
   EXPECT_EQ(refusal({one.dump(), "{}"}), "b.json: not a report of circles conform (\"format\": \"circles-conform-report/1\")");
+}
+
+}  // namespace
+}  // namespace circles::cli
+
+namespace circles::cli {
+namespace {
+
+// With --keep-going, --skip-families and an expectation file: each family's status in both reports, JUnit's
+// <skipped> for expected failures and skipped families, a <failure> for a failure and an unexpected pass.
+TEST(report, carries_each_familys_status_and_junit_skips_expected_failures_and_skipped_families) {
+  // Wrong only on worlds of 3 circles or more, which some families never draw.
+  FunctionCandidate candidate([](const Circles& w) { return w.size() >= 3 ? infinite_px(w) : spec::resolved_step_rounded(w); },
+                              "the function");
+  Options options{{0}, 340, 9, 1, 0, 1, {}};
+  options.keep_going = true;
+  options.skip = {properties::Family::zero_radius};
+  Verdict v = conform::check(candidate, options);
+  std::vector<std::string> failed, passed;
+  for (const conform::FamilyResult& f : v.families)
+    (f.status == conform::FamilyStatus::failed ? failed : passed).push_back(properties::name(f.family));
+  ASSERT_GE(failed.size(), 2u);
+  ASSERT_GE(passed.size(), 2u);  // zero-radius, skipped, and at least one that passed
+  const std::string passing = passed.front() == "zero-radius" ? passed[1] : passed.front();
+  // The file lists every failure but the first, and a family that passes.
+  std::string file;
+  for (std::size_t k = 1; k < failed.size(); ++k) file += failed[k] + " fail known\n";
+  file += passing + " fail not any more\n";
+  conform::apply(v, conform::parse_expectations(file, "f.expect", conform::Profile::resolved));
+  const nlohmann::json r = json_of(v);
+  EXPECT_EQ(r["verdict"], "does not conform");
+  EXPECT_EQ(r["family_status"][failed.front()], "failed");
+  EXPECT_EQ(r["family_status"][failed.back()], "expected failure");
+  EXPECT_EQ(r["family_status"][passing], "unexpected pass");
+  EXPECT_EQ(r["family_status"]["zero-radius"], "skipped");
+  EXPECT_EQ(r["counterexample"]["family"], failed.front());
+
+  pugi::xml_document doc;
+  ASSERT_TRUE(doc.load_string(junit_report(v, counterexample_text(v)).c_str()));
+  const auto testcase = [&](const std::string& family) {
+    return doc.select_node(("//testcase[@name='" + family + "']").c_str()).node();
+  };
+  EXPECT_EQ(std::string(testcase(failed.front()).child("failure").attribute("type").value()), "does not conform");
+  EXPECT_TRUE(std::string(testcase(failed.back()).child("skipped").attribute("message").value()).starts_with("expected failure: step 1"));
+  EXPECT_EQ(std::string(testcase(passing).child("failure").attribute("type").value()), "unexpected pass");
+  EXPECT_EQ(std::string(testcase("zero-radius").child("skipped").attribute("message").value()),
+            "skipped: left out by --families or --skip-families");
+  const pugi::xml_node suite = doc.child("testsuites").child("testsuite");
+  EXPECT_EQ(suite.attribute("failures").as_uint(), 2u);
+  EXPECT_EQ(suite.attribute("skipped").as_uint(), failed.size());  // the expected failures and zero-radius
+}
+
+TEST(report, merges_each_familys_status_across_shards_the_failure_first) {
+  nlohmann::json a = json_of(verdict_of(spec::resolved_step_rounded, 0, 2));
+  nlohmann::json b = json_of(verdict_of(spec::resolved_step_rounded, 1, 2));
+  a["family_status"]["lattice"] = "expected failure";  // failed in one shard as the file says, passed in the other
+  b["family_status"]["tangency"] = "skipped";
+  const nlohmann::json conforming = nlohmann::json::parse(merge_reports({a.dump(), b.dump()}, {"a", "b"}));
+  EXPECT_EQ(conforming["verdict"], "conforms");
+  EXPECT_EQ(conforming["family_status"]["lattice"], "expected failure");
+  EXPECT_EQ(conforming["family_status"]["tangency"], "passed");
+  b["family_status"]["tangency"] = "unexpected pass";
+  a["family_status"]["ulp-nudge"] = "failed";
+  b["family_status"]["ulp-nudge"] = "expected failure";
+  const nlohmann::json failing = nlohmann::json::parse(merge_reports({a.dump(), b.dump()}, {"a", "b"}));
+  EXPECT_EQ(failing["verdict"], "does not conform");
+  EXPECT_EQ(failing["family_status"]["tangency"], "unexpected pass");
+  EXPECT_EQ(failing["family_status"]["ulp-nudge"], "failed");
+  b["family_status"]["lattice"] = "sideways";
+  EXPECT_EQ(std::string(thrown<ReportError>([&] { merge_reports({a.dump(), b.dump()}, {"a", "b"}); })->what()),
+            "b: \"family_status\": lattice is \"sideways\", not a status of a family");
 }
 
 }  // namespace
