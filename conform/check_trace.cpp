@@ -2,6 +2,7 @@
 
 #include "conform/engines.hpp"
 #include "impl/engine.hpp"
+#include "impl/grid_reference.hpp"
 #include "impl/state_hash.hpp"
 #include "properties/chain.hpp"
 
@@ -27,7 +28,7 @@ class Reference {
   std::optional<Circles> next(const Circles& input, std::string& overflow) {
     if (kind_ == TraceReference::rounded) {
       try {
-        return impl::step_all_pairs(impl::World{input}).circles();
+        return impl::step_grid(impl::World{input}).circles();
       } catch (const impl::PositionOverflow& e) {
         overflow = overflow_reason(e.index, std::string_view(e.field) == "px" ? spec::Field::px : spec::Field::py);
         return std::nullopt;

@@ -5,7 +5,9 @@
 //
 //   double  (the default) each world must be the correctly rounded resolved step of the world on the line
 //           before it: the trace of an engine that steps in doubles, as `circles run --engine double` records.
-//           The reference is impl::step_all_pairs, the exact-decision step conform uses (conform/conform.cpp).
+//           The reference is impl::step_grid: the exact-decision step conform uses (impl::step_all_pairs,
+//           conform/conform.cpp) with a uniform grid in front, held bit-equal to it by tests; O(n log n) per
+//           step for alike radii.
 //   exact   each world must be the oracle's exact sequence from the first world, rounded: the trace of an
 //           engine that keeps the exact state, as `circles run --engine exact` records. The reference is the
 //           oracle itself (cli::reference), O(n²) exact rationals per step.

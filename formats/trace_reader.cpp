@@ -48,7 +48,8 @@ std::optional<Line> TraceReader::next() {
       // parse_line refuses a blank line with the protocol's own message; so is the first blank line before
       // a world reported.
       if (first_blank_) parse_line("", first_blank_, kStep);
-      world = parse_line(text_, line_, kStep);
+      if (std::optional<Line> plain = plain_.read(text_, kStep)) world = std::move(*plain);
+      else world = parse_line(text_, line_, kStep);
     } catch (const ProtocolError& e) {
       fail(e.line, e.reason);
     } catch (const std::bad_alloc&) {

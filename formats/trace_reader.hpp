@@ -8,6 +8,7 @@
 // to circle k). Lines are read one at a time, so a trace longer than memory can still be read.
 #pragma once
 
+#include "formats/plain_line.hpp"
 #include "formats/protocol.hpp"
 
 #include <cstddef>
@@ -56,6 +57,7 @@ class TraceReader {
   std::optional<std::uint64_t> last_step_;
   std::size_t circles_ = 0;  // the length of the first world
   std::string text_;         // the line being read
+  PlainLineReader plain_;    // the fast path for plain lines; parse_line reads the others
 };
 
 }  // namespace circles::formats

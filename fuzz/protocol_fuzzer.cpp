@@ -5,7 +5,9 @@
 // read (an integer token "-0" is read as +0 by the rule of docs/protocol.md, and that is what is compared).
 // Read as a candidate's answer (Reading::answer: NaN and infinities as values, unknown keys ignored, the text
 // blanked before nlohmann's parse), any bytes give a line or a ProtocolError of the same shape, and every line
-// the strict reader takes reads the same, bit for bit.
+// the strict reader takes reads the same, bit for bit. The trace reader's fast path (formats/plain_line.hpp)
+// takes only lines parse_line takes, and reads them the same, bit for bit.
+#include "formats/plain_line.hpp"
 #include "formats/protocol.hpp"
 #include "fuzz/check.hpp"
 
@@ -39,13 +41,21 @@ std::optional<formats::Line> answer(std::string_view text) {
 }
 
 void check(std::string_view text, std::string_view counter) {
+  static formats::PlainLineReader plain_reader;
+  std::string copy(text);
+  const std::optional<formats::Line> plain = plain_reader.read(copy, counter);
+  fuzz::require(copy == text, "the fast path leaves the line as it was", std::string(text));
   formats::Line line;
   try {
     line = formats::parse_line(text, kLine, counter);
   } catch (const formats::ProtocolError& e) {
     require_message(e);
+    fuzz::require(!plain, "the fast path takes only lines parse_line takes", std::string(text));
     return;
   }
+  if (plain)
+    fuzz::require(plain->number == line.number && fuzz::same_bits(plain->circles, line.circles),
+                  "the fast path reads a line as parse_line does, bit for bit", std::string(text));
   if (counter == formats::kId) {
     const std::optional<formats::Line> as_answer = answer(text);
     fuzz::require(as_answer.has_value(), "a line read strictly reads as an answer", std::string(text));

@@ -336,15 +336,18 @@ World step_all_pairs(const World& w) {
   const std::size_t n = w.size();
   std::vector<std::size_t> least(n);
   std::iota(least.begin(), least.end(), std::size_t{0});
-  const auto offer = [&](std::size_t a, std::size_t b) {
-    if (least[a] == a || w.precedes(b, least[a])) least[a] = b;
-  };
+  const auto px = w.px(), py = w.py(), r = w.r();
   for (std::size_t a = 0; a < n; ++a)
     for (std::size_t b = a + 1; b < n; ++b)
-      if (intersect_exact(w.px_[a], w.py_[a], w.r_[a], w.px_[b], w.py_[b], w.r_[b])) {
-        offer(a, b);
-        offer(b, a);
+      if (intersect_exact(px[a], py[a], r[a], px[b], py[b], r[b])) {
+        offer_contact(w, least, a, b);
+        offer_contact(w, least, b, a);
       }
+  return step_from_contacts(w, least);
+}
+
+World step_from_contacts(const World& w, std::span<const std::size_t> least) {
+  const std::size_t n = w.size();
   World next = w;
   for (std::size_t k = 0; k < n; ++k) {
     next.vx_[k] = w.vx_[least[k]];

@@ -59,7 +59,7 @@ class World {
  private:
   template <class>
   friend class BasicEngine;
-  friend World step_all_pairs(const World& w);
+  friend World step_from_contacts(const World& w, std::span<const std::size_t> least);
   std::vector<double> px_, py_, vx_, vy_, r_;
 };
 
@@ -164,5 +164,16 @@ extern template class BasicEngine<ExactDecisionArithmetic>;
 // The reference engine for tests: the exact step with every pair tested (no broad phase). O(n²).
 // Throws PositionOverflow (step 1) like Engine::step.
 World step_all_pairs(const World& w);
+
+// Circle a's least contact so far (least[a] == a while it has none) after contact b is offered: the least by
+// World::precedes. The order of the offers does not matter, since precedes is a strict total order.
+inline void offer_contact(const World& w, std::vector<std::size_t>& least, std::size_t a, std::size_t b) {
+  if (least[a] == a || w.precedes(b, least[a])) least[a] = b;
+}
+
+// The end of the references' step, from each circle's least contact (itself when it has none): v ← v[least],
+// then p ← advance_rounded(p, v). Throws PositionOverflow (step 1) for the first circle, then px before py,
+// whose position overflows, like Engine::step.
+World step_from_contacts(const World& w, std::span<const std::size_t> least);
 
 }  // namespace circles::impl

@@ -1,7 +1,8 @@
 // The double engine (impl/engine.hpp) against the correctly rounded oracle step spec::resolved_step_rounded.
 //
 // Every world is checked the same way (Check::world): one Engine step must equal the oracle step by value
-// (−0 == +0) in every coordinate; the all-pairs reference engine must give the same bits as the engine; and
+// (−0 == +0) in every coordinate; the all-pairs reference engine and the grid reference (impl/grid_reference.hpp)
+// must give the same bits as the engine; and
 // the broad phase's candidates must contain every exactly intersecting pair (the all-pairs validator).
 // Two properties draw worlds from the property suite's generators (properties/generators.hpp). Random worlds
 // run a few steps, each checked against the oracle from the engine's previous world, so the
@@ -28,6 +29,7 @@
 #include <vector>
 
 #include "impl/broad_phase.hpp"
+#include "impl/grid_reference.hpp"
 #include "impl/predicate.hpp"
 #include "properties/generators.hpp"
 #include "spec/circle.hpp"
@@ -62,14 +64,15 @@ std::string show(const Circles& w) {
 // Counts for one test; prints itself when the test ends.
 struct Check {
   std::string family;
-  long worlds = 0, circles = 0, new_velocity = 0, candidates = 0, intersecting = 0;
+  long worlds = 0, circles = 0, new_velocity = 0, candidates = 0, intersecting = 0, gridded = 0;
 
   explicit Check(std::string name) : family(std::move(name)) {}
   Check(const Check&) = delete;
   Check& operator=(const Check&) = delete;
   ~Check() {
-    std::printf("[ %s ] %ld worlds, %ld circle-steps, %ld took a new velocity, %ld candidate pairs, %ld intersecting\n",
-                family.c_str(), worlds, circles, new_velocity, candidates, intersecting);
+    std::printf("[ %s ] %ld worlds (%ld on the grid reference's cells), %ld circle-steps, %ld took a new velocity, "
+                "%ld candidate pairs, %ld intersecting\n",
+                family.c_str(), worlds, gridded, circles, new_velocity, candidates, intersecting);
   }
 
   // One step of w: engine == oracle by value, engine == all-pairs reference bitwise, candidates cover every
@@ -83,6 +86,8 @@ struct Check {
     const Circles got = e.world().circles();
     const Circles want = spec::resolved_step_rounded(w);
     const Circles reference = step_all_pairs(before).circles();
+    const Circles grid = step_grid(before).circles();
+    gridded += grid_side(before).has_value();
     ++worlds;
     circles += static_cast<long>(w.size());
     candidates += static_cast<long>(tested.size());
@@ -95,6 +100,9 @@ struct Check {
                                          << "\nworld:\n" << show(w);
         EXPECT_EQ(std::bit_cast<std::uint64_t>(got[k][f]), std::bit_cast<std::uint64_t>(reference[k][f]))
             << family << ": circle " << k << " field " << kFieldName[f] << " differs from the all-pairs engine";
+        EXPECT_EQ(std::bit_cast<std::uint64_t>(grid[k][f]), std::bit_cast<std::uint64_t>(reference[k][f]))
+            << family << ": circle " << k << " field " << kFieldName[f] << ": the grid reference differs from the "
+            << "all-pairs one\nworld:\n" << show(w);
       }
     }
     EXPECT_TRUE(candidates_cover_all_intersecting_pairs(before.px(), before.py(), before.r(), tested))
