@@ -208,8 +208,8 @@ void ExactEngine::start(Columns<Int> s, std::vector<double> radius, std::vector<
   choose_width();
   std::visit(
       [this](auto& columns) {
-        locate<false>(columns, false);
-        commit(columns, false);
+        this->locate<false>(columns, false);
+        this->commit(columns, false);
       },
       state_);
 }
