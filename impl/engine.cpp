@@ -186,7 +186,7 @@ void BasicEngine<A>::advance() {
   now_.py.swap(backup_py_);
   for (std::size_t c = 0; c < chunks; ++c)
     for (const Move& m : moves_[c]) {
-      least_[m.slot] = static_cast<std::uint32_t>(m.slot);
+      least_[m.slot] = m.slot;
       now_.vx[m.slot] = m.vx;
       now_.vy[m.slot] = m.vy;
     }
@@ -200,21 +200,22 @@ void BasicEngine<A>::rebuild() {
   // it offers listed from its first step.
   const std::size_t n = now_.px.size();
   const std::size_t chunks = chunk_count(n, threads_);
-  std::vector<std::array<double, 2>> largest(chunks);  // per chunk: vmax, reach
+  std::vector<std::array<double, 3>> largest(chunks);  // per chunk: vmax, reach, the largest radius
   for_each_chunk(chunks, threads_, [&](std::size_t c) {
-    double vmax = 0, reach = 0;
+    double vmax = 0, reach = 0, radius = 0;
     for (std::size_t t = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1); t < e; ++t) {
       vmax = std::max(vmax, norm_upper(now_.vx[t], now_.vy[t]));
       reach = std::max({reach, std::fabs(now_.px[t]), std::fabs(now_.py[t])});
+      radius = std::max(radius, now_.r[t]);
     }
-    largest[c] = {vmax, reach};
+    largest[c] = {vmax, reach, radius};
   });
   double vmax = 0, reach = 0, radius = 0;
-  for (const auto& [v, p] : largest) {
+  for (const auto& [v, p, r] : largest) {
     vmax = std::max(vmax, v);
     reach = std::max(reach, p);
+    radius = std::max(radius, r);
   }
-  for (const double r : now_.r) radius = std::max(radius, r);
   std::uint64_t horizon = !options_.keep_pairs ? 0 : options_.horizon > 0 ? options_.horizon : schedule_.horizon();
   // A naive test may call a pair touching slightly beyond the exact relation: its slack (impl/arithmetic.hpp)
   // widens every radius by `slack` for the list, on top of the skin.

@@ -195,8 +195,6 @@ class PairList {
   std::size_t tests() const noexcept { return tests_; }
   // True when step j of the horizon has no pair to test.
   bool quiet(std::uint64_t j) const noexcept { return size_ == 0 || j < earliest_; }
-  std::size_t chunks() const noexcept { return chunks_.size(); }
-  std::size_t slots() const noexcept { return slots_; }
   // Slots that are in no listed pair: they need no contact test until the next build.
   std::size_t lonely() const noexcept { return lonely_; }
   // Every listed pair, for the validator.
