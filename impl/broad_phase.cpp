@@ -74,7 +74,7 @@ void CellGrid::keys(std::span<const double> px, std::span<const double> py, std:
     };
     const std::int32_t cx = at0(xlo, ox), cy = at0(ylo, oy), cx1 = at0(xhi, ox), cy1 = at0(yhi, oy);
     const bool fits = ((xhi - xlo) * inv <= 1) & (cx1 - cx <= 1) & (cy1 - cy <= 1);
-    const CellKey key = (static_cast<CellKey>(cy) << kCellBits) | static_cast<CellKey>(cx);
+    const CellKey key = pack(0, static_cast<std::uint32_t>(cy), static_cast<std::uint32_t>(cx));
     out[t] = fits ? key : kMisfit;
   }
   for (std::size_t t = 0; t < n; ++t)
@@ -118,9 +118,10 @@ bool CellOrder::sort(std::span<const CellKey> keys, std::span<const CellKey> pre
     return true;
   }
   const auto before = [](const Entry& a, const Entry& b) { return a.key < b.key || (a.key == b.key && a.slot < b.slot); };
-  // Split by how far each slot's row moved since `previous`, which was sorted: the slots that kept their row
-  // are in row order, and within a row nearly in column order (a column moves by one cell at most, for most);
-  // so are those that moved one row up, and one row down. Each such list needs only local repair.
+  // Split by how far each slot's band moved since `previous`, which was sorted: the slots that kept their band
+  // are in band order, and within a band nearly in (column, row) order (a circle moves by one cell at most,
+  // for most); so are those that moved one band up, and one band down. Each such list needs only local
+  // repair.
   same_.clear();
   up_.clear();
   down_.clear();
@@ -128,17 +129,18 @@ bool CellOrder::sort(std::span<const CellKey> keys, std::span<const CellKey> pre
   const bool guided = previous.size() == n;
   for (std::size_t s = 0; s < n; ++s) {
     const Entry e{keys[s], static_cast<std::uint32_t>(s)};
-    if (guided && CellGrid::level(keys[s]) == CellGrid::level(previous[s])) {
-      const std::uint32_t now = CellGrid::cell_y(keys[s]), then = CellGrid::cell_y(previous[s]);
+    if (guided) {
+      // The band with the level above it: a change of level is never a neighbouring band.
+      const CellKey now = CellGrid::band(keys[s]), then = CellGrid::band(previous[s]);
       if (now == then) {
         same_.push_back(e);
         continue;
       }
-      if (now == then + 1) {
+      if (now == then + 1 && CellGrid::level(keys[s]) == CellGrid::level(previous[s])) {
         up_.push_back(e);
         continue;
       }
-      if (now + 1 == then) {
+      if (now + 1 == then && CellGrid::level(keys[s]) == CellGrid::level(previous[s])) {
         down_.push_back(e);
         continue;
       }

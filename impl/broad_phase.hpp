@@ -25,10 +25,13 @@
 //   No step relies on the accuracy of a rounded value; only the monotonicity of 3 and the spans, which are
 //   checked per circle, carry the argument.
 //
-// The layout. The engines keep their circles sorted by key (level, cell y, cell x), so a neighbourhood is
-// at most three runs of consecutive slots, one per row, and a step reads memory in order. Circles move little
-// per step, so the order of one step is nearly the order of the next: CellOrder re-sorts in linear time when
-// each circle stays in its row or moves to the next one (the common case) and falls back to std::sort for the
+// The layout. The engines keep their circles sorted by key, and the key orders cells in bands of kBandRows
+// rows: by level, band, column, then row within the band (a column of kBandRows cells is one run of slots).
+// So a cell's neighbours in its band are a few cells away in memory, not a whole row of the grid, and the
+// pair tests read partners that are still in the first-level cache; only a band's top row looks into the
+// next band. A neighbourhood is then at most five runs of consecutive slots. Circles move little per step,
+// so the order of one step is nearly the order of the next: CellOrder re-sorts in linear time when each
+// circle stays in its band or moves to the next one (the common case) and falls back to std::sort for the
 // few that move further.
 #pragma once
 
@@ -67,7 +70,8 @@ inline double outward_upper(double x, double r) noexcept {
 
 // ── The grid ──────────────────────────────────────────────────────────────────────────────────────────
 
-// A key: level (6 bits) · cell y (27 bits) · cell x (27 bits). Keys order circles by level, row, column.
+// A key: level (6 bits) · band (cell y / kBandRows, 24 bits) · cell x (27 bits) · cell y mod kBandRows
+// (3 bits). Keys order circles by level, band, column, and row within the band.
 using CellKey = std::uint64_t;
 
 class CellGrid {
@@ -80,14 +84,25 @@ class CellGrid {
   // before their cells clamp (clamping is correct, only slower).
   static constexpr double kPlannedCells = static_cast<double>(kCells) / 4;
 
+  // Rows per band: 8 keeps a band's columns within a few dozen slots at the densities that matter (a cell
+  // holds about two circles at 10% coverage), while only one row in 8 looks into the next band.
+  static constexpr int kBandBits = 3;
+  static constexpr std::uint32_t kBandRows = std::uint32_t{1} << kBandBits;
+
   static constexpr CellKey pack(unsigned level, std::uint32_t y, std::uint32_t x) noexcept {
-    return (CellKey{level} << (2 * kCellBits)) | (CellKey{y} << kCellBits) | x;
+    return (CellKey{level} << (2 * kCellBits)) | (CellKey{y >> kBandBits} << (kCellBits + kBandBits)) |
+           (CellKey{x} << kBandBits) | (y & (kBandRows - 1));
   }
   static constexpr unsigned level(CellKey k) noexcept { return static_cast<unsigned>(k >> (2 * kCellBits)); }
   static constexpr std::uint32_t cell_y(CellKey k) noexcept {
-    return static_cast<std::uint32_t>(k >> kCellBits) & (kCells - 1);
+    const auto band = static_cast<std::uint32_t>(k >> (kCellBits + kBandBits)) & ((kCells >> kBandBits) - 1);
+    return (band << kBandBits) | (static_cast<std::uint32_t>(k) & (kBandRows - 1));
   }
-  static constexpr std::uint32_t cell_x(CellKey k) noexcept { return static_cast<std::uint32_t>(k) & (kCells - 1); }
+  static constexpr std::uint32_t cell_x(CellKey k) noexcept {
+    return static_cast<std::uint32_t>(k >> kBandBits) & (kCells - 1);
+  }
+  // The level and band of a key: the keys of one band at one level are one run in cell order.
+  static constexpr CellKey band(CellKey k) noexcept { return k >> (kCellBits + kBandBits); }
 
   // Chooses the base cell and the origin for circles (px, py, r): the base cell is the largest box width
   // that is at most kWidthSpread times the median width (so one huge circle does not coarsen the grid for all
@@ -177,61 +192,101 @@ struct CellView {
 void index_levels(std::span<const CellKey> key, std::array<std::size_t, CellGrid::kLevels + 1>& level_begin,
                   std::vector<unsigned>& levels);
 
-// The query's position in the view: a cursor in the next row of the same level that only moves forward.
-// One per run of ascending slots (one per thread's chunk).
+// The query's position in the view: cursors that only move forward, one into the next column of a's band
+// and one into the band above. One per run of ascending slots (one per thread's chunk).
 struct NeighbourCursor {
-  std::size_t at = 0;
-  bool ready = false;
+  std::size_t column = 0, above = 0;
+  bool column_ready = false, above_ready = false;
 };
 
-// Calls visit(b) for every slot b after a (b > a) in a's forward neighbourhood: the slots of a's level in a's
-// row from a's column to the next and in the row above from one column left to one right, and the slots of
-// every higher level in a's neighbourhood there (step 4). Over all a, every pair of non-global slots whose
-// cells make them neighbours is visited exactly once:
-//   same level: both spans are ≤ 1, so by step 4 the two cells are at most one apart on each axis; the
-//     earlier slot has the lower row, or the same row and the same or lower column, so its forward
-//     neighbourhood holds the later one.
+// Calls visit_run(begin, end) for runs of consecutive slots [begin, end) that together hold every slot b after
+// a (b > a) in a's forward neighbourhood, once each: at a's level,
+//   a's column, from a to the end of the next row when that row is in a's band;
+//   the next column, from one row below a's to one above, within a's band;
+//   when a's row is its band's top row, the next band's bottom row, from one column left of a's to one right;
+// and the slots of every higher level in a's neighbourhood there (step 4). Over all a, every pair of
+// non-global slots whose cells make them neighbours is visited exactly once:
+//   same level, same band: both spans are ≤ 1, so by step 4 the two cells are at most one apart on each axis;
+//     in one column, the earlier slot (lower row, or the same cell) visits the later one in its own column;
+//     in two, the left one visits the right one in its next column, and the right one never looks left.
+//   same level, two bands: only rows one apart are neighbours, the lower band's top row and the upper band's
+//     bottom row; the lower one visits the upper one, and no slot looks into a lower band.
 //   different levels: only the lower level's slot searches the higher level.
 // Slots a must be visited in ascending order with one NeighbourCursor. Global circles (level kGlobalLevel)
-// visit nothing and are visited by no one: the caller pairs them with every circle.
-template <class Visit>
-void visit_neighbourhood(const CellGrid& grid, const CellView& view, std::size_t a, NeighbourCursor& cursor,
-                         Visit&& visit) {
+// visit nothing and are visited by no one: the caller pairs them with every circle. Runs (at most five at
+// a's level, a few per higher level) let the caller's loop over a run keep a's values in registers;
+// visit_neighbourhood below hands the slots over one by one.
+template <class VisitRun>
+void visit_neighbourhood_runs(const CellGrid& grid, const CellView& view, std::size_t a, NeighbourCursor& cursor,
+                              VisitRun&& visit_run) {
   using G = CellGrid;
   const std::size_t n = view.key.size();
   const CellKey k = view.key[a];
   const unsigned level = G::level(k);
   if (level == G::kGlobalLevel) return;
   const std::uint32_t cx = G::cell_x(k), cy = G::cell_y(k);
-  const std::uint32_t x1 = cx + 1 < G::kCells ? cx + 1 : cx;
-  // a's row: the slots after a up to the end of the next column.
-  const CellKey row_end = G::pack(level, cy, x1);
-  for (std::size_t b = a + 1; b < n && view.key[b] <= row_end; ++b) visit(b);
-  // The row above, columns cx − 1 … cx + 1. Its first key only grows with a's key, so the cursor moves
-  // forward over the whole view once: linear in all.
-  if (cy + 1 < G::kCells) {
-    const CellKey lo = G::pack(level, cy + 1, cx > 0 ? cx - 1 : 0), hi = G::pack(level, cy + 1, x1);
-    std::size_t& c = cursor.at;
-    if (!cursor.ready) {
-      c = static_cast<std::size_t>(std::lower_bound(view.key.begin(), view.key.end(), lo) - view.key.begin());
-      cursor.ready = true;
+  const std::uint32_t row = cy & (G::kBandRows - 1);  // a's row within its band
+  const bool band_top = row == G::kBandRows - 1;
+  // The run of slots from `from` on whose keys are ≤ last.
+  const auto run = [&](std::size_t from, CellKey last) {
+    std::size_t end = from;
+    while (end < n && view.key[end] <= last) ++end;
+    if (end > from) visit_run(from, end);
+  };
+  // A cursor moved forward to the first key ≥ first. Each cursor's `first` only grows with a's key (shown at
+  // each use), so a cursor moves over the whole view once: linear in all.
+  const auto seek = [&](std::size_t& at, bool& ready, CellKey first) {
+    if (!ready) {
+      at = static_cast<std::size_t>(std::lower_bound(view.key.begin(), view.key.end(), first) - view.key.begin());
+      ready = true;
     }
-    while (c < n && view.key[c] < lo) ++c;
-    for (std::size_t b = c; b < n && view.key[b] <= hi; ++b) visit(b);
+    while (at < n && view.key[at] < first) ++at;
+    return at;
+  };
+  // a's column: the slots after a to the end of the next row, if the band has one.
+  run(a + 1, G::pack(level, band_top ? cy : cy + 1, cx));
+  // The next column, rows cy − 1 … cy + 1 within the band. Its first key (level, band, cx + 1, row − 1 or the
+  // band's first row) only grows with a's key (level, band, cx, row).
+  if (cx + 1 < G::kCells) {
+    const std::uint32_t y0 = row > 0 ? cy - 1 : cy, y1 = band_top ? cy : cy + 1;
+    run(seek(cursor.column, cursor.column_ready, G::pack(level, y0, cx + 1)), G::pack(level, y1, cx + 1));
   }
-  // Each level above: step 4's range, row by row, by binary search within the level.
+  // The band above, from a band's top row: its bottom row, columns cx − 1 … cx + 1, one run per column. Its
+  // first key (level, band + 1, cx − 1, 0) only grows with a's key among the top rows' slots.
+  if (band_top && cy + 1 < G::kCells) {
+    const std::uint32_t x0 = cx > 0 ? cx - 1 : 0, x1 = cx + 1 < G::kCells ? cx + 1 : cx;
+    std::size_t b = seek(cursor.above, cursor.above_ready, G::pack(level, cy + 1, x0));
+    for (std::uint32_t x = x0; x <= x1; ++x) {
+      const CellKey cell = G::pack(level, cy + 1, x);
+      while (b < n && view.key[b] < cell) ++b;
+      run(b, cell);
+    }
+  }
+  // Each level above: step 4's range, column by column, one run per band, by binary search within the level.
   for (const unsigned above : view.levels) {
     if (above <= level) continue;
     const G::Range range = grid.neighbourhood(view.px[a], view.py[a], view.r[a], above);
     const auto first = view.key.begin() + static_cast<std::ptrdiff_t>(view.level_begin[above]);
     const auto last = view.key.begin() + static_cast<std::ptrdiff_t>(view.level_begin[above + 1]);
-    for (std::uint32_t row = range.y0; row <= range.y1; ++row) {
-      const CellKey hi = G::pack(above, row, range.x1);
-      for (auto b = std::lower_bound(first, last, G::pack(above, row, range.x0)); b != last && *b <= hi; ++b)
-        visit(static_cast<std::size_t>(b - view.key.begin()));
-      if (row == G::kCells - 1) break;
-    }
+    // Cell indices are below 2^27, so x + 1 and y + 1 cannot wrap. A run stops at the level's end too: keys
+    // of later levels are larger than any key of this one.
+    for (std::uint32_t x = range.x0; x <= range.x1; ++x)
+      for (std::uint32_t y = range.y0; y <= range.y1;) {
+        const std::uint32_t end = std::min(range.y1, y | (G::kBandRows - 1));  // the range's last row in y's band
+        run(static_cast<std::size_t>(std::lower_bound(first, last, G::pack(above, y, x)) - view.key.begin()),
+            G::pack(above, end, x));
+        y = end + 1;
+      }
   }
+}
+
+// The same slots one by one: visit(b) for each.
+template <class Visit>
+void visit_neighbourhood(const CellGrid& grid, const CellView& view, std::size_t a, NeighbourCursor& cursor,
+                         Visit&& visit) {
+  visit_neighbourhood_runs(grid, view, a, cursor, [&visit](std::size_t begin, std::size_t end) {
+    for (std::size_t b = begin; b < end; ++b) visit(b);
+  });
 }
 
 // A contact that one chunk of slots finds for a slot of a later chunk: slot `to` intersects slot `from`

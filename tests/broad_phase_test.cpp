@@ -1,0 +1,150 @@
+// The broad phase's walk and order (impl/broad_phase.hpp), checked directly against their definitions rather
+// than only through the engines: every pair of neighbouring cells is visited exactly once, from the earlier
+// slot, across band boundaries and levels; and CellOrder's guided re-sort equals a plain sort.
+#include "impl/broad_phase.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <numeric>
+#include <random>
+#include <utility>
+#include <vector>
+
+namespace circles::impl {
+namespace {
+
+using G = CellGrid;
+
+// Circles in cell order with everything a CellView needs.
+struct Sorted {
+  G grid;
+  std::vector<CellKey> key;
+  std::vector<double> px, py, r;
+  std::vector<unsigned> levels;
+  std::array<std::size_t, G::kLevels + 1> level_begin{};
+  CellView view() const { return {key, px, py, r, levels, level_begin}; }
+};
+
+Sorted sorted(const std::vector<std::array<double, 3>>& circles) {
+  Sorted s;
+  std::vector<double> px, py, r;
+  for (const auto& [x, y, radius] : circles) {
+    px.push_back(x);
+    py.push_back(y);
+    r.push_back(radius);
+  }
+  s.grid.plan(px, py, r);
+  std::vector<CellKey> keys(px.size());
+  s.grid.keys(px, py, r, keys);
+  std::vector<std::uint32_t> order;
+  CellOrder().sort(keys, {}, order);
+  for (const std::uint32_t t : order) {
+    s.key.push_back(keys[t]);
+    s.px.push_back(px[t]);
+    s.py.push_back(py[t]);
+    s.r.push_back(r[t]);
+  }
+  index_levels(s.key, s.level_begin, s.levels);
+  return s;
+}
+
+// The definition: a and b (non-global) are neighbours when, at the higher of their levels L, the cell of the
+// one at L lies in the other's neighbourhood range at L (step 4); at one level that is cells at most one apart
+// on each axis.
+bool neighbours(const Sorted& s, std::size_t a, std::size_t b) {
+  const unsigned la = G::level(s.key[a]), lb = G::level(s.key[b]);
+  if (la == G::kGlobalLevel || lb == G::kGlobalLevel) return false;
+  if (la == lb) {
+    const auto apart = [](std::uint32_t u, std::uint32_t v) { return u > v ? u - v : v - u; };
+    return apart(G::cell_x(s.key[a]), G::cell_x(s.key[b])) <= 1 && apart(G::cell_y(s.key[a]), G::cell_y(s.key[b])) <= 1;
+  }
+  const std::size_t low = la < lb ? a : b, high = la < lb ? b : a;
+  const G::Range range = s.grid.neighbourhood(s.px[low], s.py[low], s.r[low], G::level(s.key[high]));
+  const std::uint32_t x = G::cell_x(s.key[high]), y = G::cell_y(s.key[high]);
+  return range.x0 <= x && x <= range.x1 && range.y0 <= y && y <= range.y1;
+}
+
+// A world of many circles per cell around band boundaries: cells of about 2 units, rows 0 to 40 (bands of 8
+// rows), and a few circles a level or two up.
+std::vector<std::array<double, 3>> busy_world(unsigned seed) {
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> at(0, 80), radius(0.5, 1), big(3, 12);
+  std::vector<std::array<double, 3>> circles;
+  for (int k = 0; k < 1500; ++k) circles.push_back({at(random), at(random), radius(random)});
+  for (int k = 0; k < 12; ++k) circles.push_back({at(random), at(random), big(random)});
+  return circles;
+}
+
+TEST(broad_phase, the_walk_visits_every_pair_of_neighbouring_cells_once_from_the_earlier_slot) {
+  for (unsigned seed = 1; seed <= 3; ++seed) {
+    const Sorted s = sorted(busy_world(seed));
+    const std::size_t n = s.key.size();
+    ASSERT_GE(s.levels.size(), 2u) << "the world must use more than one level";
+    std::map<std::pair<std::size_t, std::size_t>, int> visits;
+    NeighbourCursor cursor;
+    for (std::size_t a = 0; a < n; ++a)
+      visit_neighbourhood(s.grid, s.view(), a, cursor, [&](std::size_t b) {
+        EXPECT_GT(b, a);
+        ++visits[{a, b}];
+      });
+    std::size_t expected = 0, across_bands = 0;
+    for (std::size_t a = 0; a < n; ++a)
+      for (std::size_t b = a + 1; b < n; ++b) {
+        const bool want = neighbours(s, a, b);
+        const auto found = visits.find({a, b});
+        const int got = found == visits.end() ? 0 : found->second;
+        ASSERT_EQ(got, want ? 1 : 0) << "slots " << a << " and " << b << " (seed " << seed << ")";
+        expected += want;
+        across_bands += want && G::level(s.key[a]) == G::level(s.key[b]) &&
+                        G::cell_y(s.key[a]) / G::kBandRows != G::cell_y(s.key[b]) / G::kBandRows;
+      }
+    EXPECT_EQ(visits.size(), expected);
+    EXPECT_GT(across_bands, 100u) << "the world must put many neighbours across a band boundary";
+  }
+}
+
+TEST(broad_phase, keys_order_cells_by_level_band_column_then_row_within_the_band) {
+  // Row 7 is the top of band 0, row 8 the bottom of band 1: column 5 of band 0 comes before column 0 of band 1,
+  // and within a band a column's rows come before the next column.
+  EXPECT_LT(G::pack(0, 7, 5), G::pack(0, 8, 0));
+  EXPECT_LT(G::pack(0, 7, 5), G::pack(0, 0, 6));
+  EXPECT_LT(G::pack(0, 3, 5), G::pack(0, 4, 5));
+  EXPECT_LT(G::pack(0, G::kCells - 1, G::kCells - 1), G::pack(1, 0, 0));
+  for (const std::uint32_t y : {0u, 7u, 8u, 12345u, G::kCells - 1})
+    for (const std::uint32_t x : {0u, 1u, 999u, G::kCells - 1}) {
+      const CellKey k = G::pack(3, y, x);
+      EXPECT_EQ(G::level(k), 3u);
+      EXPECT_EQ(G::cell_y(k), y);
+      EXPECT_EQ(G::cell_x(k), x);
+    }
+}
+
+TEST(broad_phase, the_guided_re_sort_equals_a_plain_sort_after_moves_within_and_across_bands) {
+  const Sorted s = sorted(busy_world(7));
+  const std::size_t n = s.key.size();
+  std::mt19937_64 random(11);
+  std::uniform_int_distribution<int> move(-12, 12), far(0, 19);
+  // Each slot's cell moves by up to 12 rows and columns (many cross a band), one in twenty anywhere.
+  std::vector<CellKey> moved(n);
+  for (std::size_t t = 0; t < n; ++t) {
+    const CellKey k = s.key[t];
+    const auto shift = [&](std::uint32_t c) {
+      if (far(random) == 0) return static_cast<std::uint32_t>(random() % 1000);
+      return static_cast<std::uint32_t>(std::max(0, static_cast<int>(c) + move(random)));
+    };
+    moved[t] = G::pack(G::level(k), shift(G::cell_y(k)), shift(G::cell_x(k)));
+  }
+  std::vector<std::uint32_t> guided, plain(n);
+  CellOrder().sort(moved, s.key, guided);
+  std::iota(plain.begin(), plain.end(), 0u);
+  std::stable_sort(plain.begin(), plain.end(), [&](std::uint32_t a, std::uint32_t b) { return moved[a] < moved[b]; });
+  EXPECT_EQ(guided, plain);
+}
+
+}  // namespace
+}  // namespace circles::impl
