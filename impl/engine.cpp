@@ -233,8 +233,15 @@ void BasicEngine<A>::rebuild() {
   // 2^1023 − reach, no position can overflow (a rounded |p| ≤ 2^1023·(1 + 2^-52) < DBL_MAX), and steps
   // update in place.
   overflow_free_ = reach + skin_for(horizon + 1, vmax, reach, A::drift) < kOverflowFreeReach;
-  inflated_.resize(n);
-  for (std::size_t t = 0; t < n; ++t) inflated_[t] = pad > 0 ? outward_upper(now_.r[t], pad) : now_.r[t];
+  // Each radius widened by `widen` (outward, so at least r + widen exactly), or as it is for 0; per chunk.
+  const auto widened = [&](std::vector<double>& to, double widen) {
+    to.resize(n);
+    for_each_chunk(chunks, threads_, [&](std::size_t c) {
+      for (std::size_t t = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1); t < e; ++t)
+        to[t] = widen > 0 ? outward_upper(now_.r[t], widen) : now_.r[t];
+    });
+  };
+  widened(inflated_, pad);
   if (horizon != planned_horizon_) {
     grid_.plan(now_.px, now_.py, inflated_);
     planned_horizon_ = horizon;
@@ -290,16 +297,13 @@ void BasicEngine<A>::rebuild() {
   index_levels(now_.key, now_.level_begin, now_.levels);
   const CellView view{now_.key, now_.px, now_.py, inflated_, now_.levels, now_.level_begin};
   // Each pair's first step from its gap (impl/pair_list.hpp), on the radii widened by the slack alone.
-  padded_.resize(n);
-  for (std::size_t t = 0; t < n; ++t) padded_[t] = slack > 0 ? outward_upper(now_.r[t], slack) : now_.r[t];
+  widened(padded_, slack);
   // Most pairs the broad phase offers are decided by the filter of the exact test alone (no square root):
   // disjoint at the inflated radii means never within the horizon, and intersecting at the padded ones means
   // from step 0.
   const double *px = now_.px.data(), *py = now_.py.data(), *r = padded_.data(), *ri = inflated_.data();
   pairs_.build(grid_, view, threads_, horizon, [px, py, r, ri, step, horizon](std::size_t a, std::size_t b) {
-    if (intersect_filter(px[a], py[a], ri[a], px[b], py[b], ri[b]) == Decision::disjoint) return kNever;
-    if (intersect_filter(px[a], py[a], r[a], px[b], py[b], r[b]) == Decision::intersect) return std::uint32_t{0};
-    return first_step(px[a], py[a], r[a], px[b], py[b], r[b], step, horizon);
+    return listing_step(px[a], py[a], r[a], ri[a], px[b], py[b], r[b], ri[b], step, horizon);
   });
   built_at_ = stats_.steps;
   stats_.pairs_listed += pairs_.size();

@@ -17,6 +17,7 @@
 #pragma once
 
 #include "impl/broad_phase.hpp"
+#include "impl/predicate.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -96,12 +97,11 @@ inline constexpr double kQuotientShrink = 1 - 0x1p-48;
 inline constexpr std::uint32_t kNever = ~std::uint32_t{0};
 inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-// The first step of a horizon of `horizon` steps, each moving a circle at most `step`, at which the circles
-// (ax, ay, ar) and (bx, by, br) may intersect: 0 … horizon, or kNever.
-inline std::uint32_t first_step(double ax, double ay, double ar, double bx, double by, double br, double step,
-                                std::uint64_t horizon) noexcept {
-  const double dx = bx - ax, dy = by - ay;
-  const double d2 = dx * dx + dy * dy;
+// The first step of a horizon of `horizon` steps, each moving a circle at most `step`, at which two circles of
+// radii ar and br whose centres are dx = RN(bx − ax), dy = RN(by − ay) apart, with d2 = RN(RN(dx²) + RN(dy²)),
+// may intersect: 0 … horizon, or kNever.
+inline std::uint32_t first_step_from(double dx, double dy, double d2, double ar, double br, double step,
+                                     std::uint64_t horizon) noexcept {
   const double root = d2 < kInfinity ? std::sqrt(d2) : norm_upper(dx, dy);
   const double gap = root * (1 - kGapRelative) - (ar + br) * (1 + kGapRelative) - kGapAbsolute;
   if (!std::isfinite(gap)) return 0;
@@ -109,6 +109,31 @@ inline std::uint32_t first_step(double ax, double ay, double ar, double bx, doub
   const double q = gap / (2 * step) * kQuotientShrink;
   if (!(q <= static_cast<double>(horizon))) return kNever;  // also +∞ for step = 0
   return static_cast<std::uint32_t>(std::ceil(q));
+}
+
+// The same for the circles (ax, ay, ar) and (bx, by, br).
+inline std::uint32_t first_step(double ax, double ay, double ar, double bx, double by, double br, double step,
+                                std::uint64_t horizon) noexcept {
+  const double dx = bx - ax, dy = by - ay;
+  return first_step_from(dx, dy, dx * dx + dy * dy, ar, br, step, horizon);
+}
+
+// A pair's first step in a list (PairList::build), for radii ar, br ≥ 0 widened to ar′ ≥ ar and br′ ≥ br by
+// the skin: kNever when the widened circles are certainly disjoint (intersect_filter says so: they cannot meet
+// within the horizon), 0 when the circles certainly intersect now, first_step otherwise. The same answer as
+// those three calls, with the difference and the sum of squares computed once for all three (the filter's q
+// and first_step's d2 are the same RN(RN(dx²) + RN(dy²))), so that a pair the broad phase offers for nothing
+// costs little more than one filter.
+// Always inlined: it is the body of the broad phase's loop over a run of partners, where a's values stay in
+// registers.
+[[gnu::always_inline]] inline std::uint32_t listing_step(double ax, double ay, double ar, double ar_wide, double bx, double by, double br,
+                                  double br_wide, double step, std::uint64_t horizon) noexcept {
+  const double dx = bx - ax, dy = by - ay;
+  const double d2 = dx * dx + dy * dy;
+  if (sign_filter_of_squares(d2, ar_wide + br_wide, kAbsolute) == Decision::disjoint) [[likely]]
+    return kNever;
+  if (sign_filter_of_squares(d2, ar + br, kAbsolute) == Decision::intersect) return 0;
+  return first_step_from(dx, dy, d2, ar, br, step, horizon);
 }
 
 // ── The schedule ──────────────────────────────────────────────────────────────────────────────────────
@@ -218,10 +243,12 @@ class PairList {
   std::vector<Chunk> chunks_;
   std::vector<SlotPair> global_;  // pairs with a global slot, tested from their first step every step
   std::vector<std::uint32_t> global_first_;
-  // build's scratch, kept so that a rebuild allocates nothing: per chunk the pairs found and their first
+  // build's scratch, kept so that a rebuild allocates nothing: per chunk the pairs found with their first
   // steps in the order found, and which slots are in a pair.
-  std::vector<std::vector<SlotPair>> found_;
-  std::vector<std::vector<std::uint32_t>> found_first_;
+  struct Found {
+    std::uint32_t a, b, step;
+  };
+  std::vector<std::vector<Found>> found_;
   std::vector<unsigned char> listed_;
   std::uint64_t horizon_ = 0, earliest_ = 0;
   std::size_t size_ = 0, tests_ = 0, slots_ = 0, lonely_ = 0;

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -30,20 +31,16 @@ void PairList::build(const CellGrid& grid, const CellView& view, unsigned thread
   const std::size_t chunks = chunk_count(n, threads);
   chunks_.resize(chunks);
   found_.resize(chunks);
-  found_first_.resize(chunks);
   // The pairs of each chunk in the order the broad phase offers them: by first slot.
   for_each_chunk(chunks, threads, [&](std::size_t c) {
-    std::vector<SlotPair>& found = found_[c];
-    std::vector<std::uint32_t>& steps = found_first_[c];
+    std::vector<Found>& found = found_[c];
     found.clear();
-    steps.clear();
     NeighbourCursor cursor;
     for (std::size_t a = chunk_begin(n, chunks, c), end = chunk_begin(n, chunks, c + 1); a < end; ++a)
-      visit_neighbourhood(grid, view, a, cursor, [&](std::size_t b) {
-        const std::uint32_t step = first(a, b);
-        if (step > horizon) return;
-        found.push_back({static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b)});
-        steps.push_back(step);
+      visit_neighbourhood_runs(grid, view, a, cursor, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t b = begin; b < end; ++b)
+          if (const std::uint32_t step = first(a, b); step <= horizon)
+            found.push_back({static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b), step});
       });
   });
   // Global slots (a box too wide for every level) against every slot, each pair once.
@@ -58,15 +55,31 @@ void PairList::build(const CellGrid& grid, const CellView& view, unsigned thread
       global_.push_back({static_cast<std::uint32_t>(std::min(g, b)), static_cast<std::uint32_t>(std::max(g, b))});
       global_first_.push_back(step);
     }
-  // Per chunk, a counting sort by (block, bucket), stable, so each bucket stays in slot order.
+  // Per chunk, a counting sort by (block, bucket), stable, so each bucket stays in slot order; and its tally:
+  // its tests over the horizon, its earliest first step, and the slots in its pairs (a pair's second slot may
+  // be another chunk's, so those marks are relaxed atomic stores, all of the same value).
+  std::vector<unsigned char>& listed = listed_;
+  listed.assign(n, 0);
+  std::vector<std::array<std::uint64_t, 2>> tally(chunks);  // per chunk: tests, earliest first step
+  const auto count = [&](const std::vector<SlotPair>& pairs, const std::vector<std::uint32_t>& steps,
+                         std::array<std::uint64_t, 2>& into) {
+    into = {0, horizon + 1};
+    for (const std::uint32_t step : steps) {
+      into[0] += horizon + 1 - step;
+      into[1] = std::min<std::uint64_t>(into[1], step);
+    }
+    for (const SlotPair& p : pairs) {
+      std::atomic_ref<unsigned char>(listed[p.a]).store(1, std::memory_order_relaxed);
+      std::atomic_ref<unsigned char>(listed[p.b]).store(1, std::memory_order_relaxed);
+    }
+  };
   for_each_chunk(chunks, threads, [&](std::size_t c) {
     Chunk& chunk = chunks_[c];
     const std::size_t begin = chunk_begin(n, chunks, c), end = chunk_begin(n, chunks, c + 1);
     const std::size_t blocks = (end - begin + kBlockSlots - 1) / kBlockSlots;
-    const std::vector<SlotPair>& found = found_[c];
-    const std::vector<std::uint32_t>& steps = found_first_[c];
+    const std::vector<Found>& found = found_[c];
     const auto bin = [&](std::size_t i) {
-      return (found[i].a - begin) / kBlockSlots * kBuckets + std::min(steps[i], kBuckets - 1);
+      return (found[i].a - begin) / kBlockSlots * kBuckets + std::min(found[i].step, kBuckets - 1);
     };
     chunk.starts.assign(blocks * kBuckets + 1, 0);
     for (std::size_t i = 0; i < found.size(); ++i) ++chunk.starts[bin(i) + 1];
@@ -76,27 +89,21 @@ void PairList::build(const CellGrid& grid, const CellView& view, unsigned thread
     std::vector<std::uint32_t> at(chunk.starts.begin(), chunk.starts.end() - 1);
     for (std::size_t i = 0; i < found.size(); ++i) {
       const std::uint32_t to = at[bin(i)]++;
-      chunk.pairs[to] = found[i];
-      chunk.first[to] = steps[i];
+      chunk.pairs[to] = {found[i].a, found[i].b};
+      chunk.first[to] = found[i].step;
     }
+    count(chunk.pairs, chunk.first, tally[c]);
   });
+  tally.emplace_back();
+  count(global_, global_first_, tally.back());
   size_ = global_.size();
   tests_ = 0;
   earliest_ = horizon + 1;
-  std::vector<unsigned char>& listed = listed_;
-  listed.assign(n, 0);
-  const auto count = [&](const std::vector<SlotPair>& pairs, const std::vector<std::uint32_t>& steps) {
-    for (const std::uint32_t step : steps) {
-      tests_ += horizon + 1 - step;
-      earliest_ = std::min<std::uint64_t>(earliest_, step);
-    }
-    for (const SlotPair& p : pairs) listed[p.a] = listed[p.b] = 1;
-  };
-  for (const Chunk& chunk : chunks_) {
-    size_ += chunk.pairs.size();
-    count(chunk.pairs, chunk.first);
+  for (const Chunk& chunk : chunks_) size_ += chunk.pairs.size();
+  for (const auto& [tests, earliest] : tally) {
+    tests_ += tests;
+    earliest_ = std::min(earliest_, earliest);
   }
-  count(global_, global_first_);
   lonely_ = static_cast<std::size_t>(std::count(listed.begin(), listed.end(), 0));
 }
 

@@ -58,13 +58,13 @@ inline constexpr double kAbsoluteRescaled = 0x1p-1070;
 // absolute term is under 2^-122·M·2^-50, so rescaling would give the same verdict and only cost time.
 inline constexpr double kRescaleBelow = 0x1p-900;
 
-// The certified sign of F = S² − X² − Y², from dx, dy, s that are X, Y, S rounded once each (plus, in
-// Stage A', the absolute error kAbsoluteRescaled allows for). `absolute` is kAbsolute or kAbsoluteRescaled.
+// The certified sign of F = S² − X² − Y², from q = RN(RN(dx²) + RN(dy²)) and s, where dx, dy, s are X, Y, S
+// rounded once each (plus, in Stage A', the absolute error kAbsoluteRescaled allows for). `absolute` is
+// kAbsolute or kAbsoluteRescaled.
 // Branch-free so that a loop over it vectorizes: both comparisons are always made and combined as integers
 // (GCC does not if-convert a floating-point comparison that the source makes conditionally).
-inline Decision sign_filter(double dx, double dy, double s, double absolute) {
+inline Decision sign_filter_of_squares(double q, double s, double absolute) {
   const double p = s * s;
-  const double q = dx * dx + dy * dy;
   const double d = p - q;
   const double m = p + q;  // +inf on any overflow, and then the bound is +inf: undecided
   const double bound = m * kRelative + absolute;
@@ -72,6 +72,10 @@ inline Decision sign_filter(double dx, double dy, double s, double absolute) {
   const bool positive = d > 0;
   // intersect (1) if decided and positive, disjoint (0) if decided and not, undecided (2) otherwise
   return static_cast<Decision>((decided & positive) | (!decided) << 1);
+}
+// The same from dx and dy: q = RN(RN(dx²) + RN(dy²)).
+inline Decision sign_filter(double dx, double dy, double s, double absolute) {
+  return sign_filter_of_squares(dx * dx + dy * dy, s, absolute);
 }
 
 // Naive: (ar + br)² >= dx² + dy² in doubles. Kept for benchmarks only.
