@@ -28,7 +28,10 @@ class Reference {
   std::optional<Circles> next(const Circles& input, std::string& overflow) {
     if (kind_ == TraceReference::rounded) {
       try {
-        return impl::step_grid(impl::World{input}).circles();
+        // In two statements, so that the copy of `input` is gone before the result is copied out of its World:
+        // at 10^7 circles each world is 400 MB, and check-trace must fit in 2 GB (docs/benchmarks.md).
+        const impl::World next = impl::step_grid(impl::World{input});
+        return next.circles();
       } catch (const impl::PositionOverflow& e) {
         overflow = overflow_reason(e.index, std::string_view(e.field) == "px" ? spec::Field::px : spec::Field::py);
         return std::nullopt;
