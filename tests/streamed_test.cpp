@@ -5,6 +5,7 @@
 #include "formats/scene.hpp"
 #include "formats/streamed.hpp"
 #include "formats/trace_reader.hpp"
+#include "tests/temp_dir.hpp"
 #include "tests/thrown.hpp"
 
 #include <gtest/gtest.h>
@@ -148,6 +149,21 @@ TEST(streamed_scene, refuses_deep_nesting_in_a_circle_with_the_exact_message) {
     EXPECT_EQ(scene_message(text, piece), "s.json: circle 1: expected 5 numbers [px, py, vx, vy, r], found 1");
 }
 
+// The files `circles run` loads: the doubles of load_scene, and load_scene's messages for what is not a file.
+TEST(streamed_scene, loads_a_file_as_load_scene_does_and_refuses_what_is_not_a_file) {
+  circles::testing::TempDir dir;
+  const std::string path = dir.write("s.json", "{\"steps\": 3, \"circles\": [" + random_circles(2000, 10) + "]}");
+  const SceneWorld world = load_scene_world(path);
+  const Scene exact = load_scene(path);
+  EXPECT_EQ(world.circles.size(), 2000u);
+  EXPECT_TRUE(same_bits(world.circles, doubles_of(exact)));
+  EXPECT_EQ(world.steps, std::optional<std::uint64_t>(3));
+  const auto directory = thrown<SceneError>([&] { load_scene_world(dir.path.string()); });
+  EXPECT_EQ(std::string(directory ? directory->what() : ""), dir.path.string() + ": cannot read the file: it is a directory");
+  const auto missing = thrown<SceneError>([&] { load_scene_world(path + ".not"); });
+  EXPECT_EQ(std::string(missing ? missing->what() : ""), path + ".not: cannot open the file");
+}
+
 // A trace read with its lines streamed, or read whole: the worlds, or the message.
 std::vector<Line> trace(const std::string& text, std::size_t piece, std::string& error) {
   std::istringstream in(text);
@@ -173,6 +189,18 @@ TEST(streamed_trace, reads_lines_in_pieces_as_parse_line_does) {
   std::vector<Line> whole;
   for (std::string line; std::getline(in, line);) whole.push_back(parse_line(line, whole.size() + 1, kStep));
   for (const std::size_t piece : kPieces) {
+    // The pieces take each line, and stop at its '\n'.
+    std::istringstream lines(text);
+    PlainLineReader reader;
+    for (std::size_t t = 0; t < 3; ++t) {
+      const std::streampos start = lines.tellg();
+      const std::optional<Streamed> s = stream_document(lines, true, reader, piece);
+      ASSERT_TRUE(s) << "piece " << piece << ", line " << t + 1;
+      EXPECT_EQ(s->circles.size(), 40u);
+      lines.clear();
+      lines.seekg(start + static_cast<std::streamoff>(s->bytes));
+    }
+    EXPECT_EQ(lines.tellg(), static_cast<std::streampos>(text.size()));
     std::string error;
     const std::vector<Line> worlds = trace(text, piece, error);
     EXPECT_EQ(error, "");
@@ -204,6 +232,17 @@ TEST(streamed_trace, refuses_a_huge_step_count_naming_its_line) {
     EXPECT_EQ(trace(text, piece, error).size(), 1u);
     EXPECT_EQ(error, "t.jsonl:2: \"step\": expected an integer from 0 to 18446744073709551615, found "
                      "100000000000000000000");
+  }
+}
+
+TEST(streamed_trace, refuses_a_number_of_a_million_digits_naming_its_line_and_field) {
+  const std::string huge = "1" + std::string(999999, '0');  // 10^999999
+  const std::string text = trace_line(0, "[1, 2, 3, 4, 5], [0, 0, " + huge + ", 0, 1]") + "\n";
+  for (const std::size_t piece : kPieces) {
+    std::string error;
+    EXPECT_TRUE(trace(text, piece, error).empty());
+    EXPECT_EQ(error, "t.jsonl:1: circle 1, field vx: 100000000000000000000...0000000000 (1000000 characters) is "
+                     "beyond the double range");
   }
 }
 
