@@ -311,9 +311,11 @@ int main(int argc, char** argv) {
     const auto& [n, coverage, seed] = random_options;
     // A random world for `run` stays in doubles (random_world below): its exact circles would take ten times the
     // memory, and the engines step doubles.
+    // A scene file for `run` is read into doubles alone (load_scene_world), for the same reason.
     const Scene scene = random ? (*run ? Scene{} : random_scene(n, coverage, seed, kOracleBytesPerCircle))
-                        : from_file ? load_scene(scene_path)
+                        : from_file ? (*run ? Scene{} : load_scene(scene_path))
                                     : default_scene();
+    SceneWorld file_world = *run && from_file ? load_scene_world(scene_path) : SceneWorld{};
     const std::string scene_name = random      ? random_scene_name(n, coverage, seed)
                                    : from_file ? scene_path
                                                : "the embedded default scene";
@@ -331,8 +333,11 @@ int main(int argc, char** argv) {
       options.fit = fit;
       // The progress bar only on a terminal: output to a pipe, a file or CI stays free of it.
       if (isatty(STDERR_FILENO)) options.progress = &std::cerr;
-      if (run->count("--steps") == 0 && scene.steps) options.steps = *scene.steps;
-      const Circles world = random ? random_world(n, coverage, seed, run_bytes_per_circle(engine_name)) : doubles_of(scene);
+      const std::optional<std::uint64_t> scene_steps = from_file ? file_world.steps : scene.steps;
+      if (run->count("--steps") == 0 && scene_steps) options.steps = *scene_steps;
+      const Circles world = random      ? random_world(n, coverage, seed, run_bytes_per_circle(engine_name))
+                            : from_file ? std::move(file_world.circles)
+                                        : doubles_of(scene);
       RunResult result;
       try {
         result = circles::cli::run(world, options);

@@ -28,7 +28,10 @@ class Reference {
   std::optional<Circles> next(const Circles& input, std::string& overflow) {
     if (kind_ == TraceReference::rounded) {
       try {
-        return impl::step_grid(impl::World{input}).circles();
+        // In two statements, so that the copy of `input` is gone before the result is copied out of its World:
+        // at 10^7 circles each world is 400 MB, and check-trace must fit in 2 GB (docs/benchmarks.md).
+        const impl::World next = impl::step_grid(impl::World{input});
+        return next.circles();
       } catch (const impl::PositionOverflow& e) {
         overflow = overflow_reason(e.index, std::string_view(e.field) == "px" ? spec::Field::px : spec::Field::py);
         return std::nullopt;
@@ -58,7 +61,7 @@ TraceReference trace_reference(std::string_view engine) {
 
 TraceCheck check_trace(TraceReader& reader, TraceReference kind) {
   TraceCheck check;
-  const std::optional<Line> first = reader.next();  // throws for an empty file
+  std::optional<Line> first = reader.next();  // throws for an empty file
   std::size_t previous_line = reader.line();
   const std::size_t first_line = previous_line;
   check.first_step = check.last_step = first->number;
@@ -68,8 +71,8 @@ TraceCheck check_trace(TraceReader& reader, TraceReference kind) {
   trajectory.add(first->circles);
   // The trace's worlds as a chain's answers (properties/chain.hpp), each against the reference's step of the
   // world before it (rounded) or the oracle's own sequence (exact); the reader holds every line to the first's
-  // number of circles.
-  properties::Chain chain(first->circles, std::numeric_limits<std::uint64_t>::max());
+  // number of circles. The chain takes the first world itself: a copy would be one world more in memory.
+  properties::Chain chain(std::move(first->circles), std::numeric_limits<std::uint64_t>::max());
   while (std::optional<Line> now = reader.next()) {
     std::string overflow;
     std::optional<Circles> expected = reference.next(chain.input(), overflow);

@@ -57,9 +57,7 @@ std::optional<double> number(ondemand::value value) {
   return std::nullopt;
 }
 
-bool read_circles(ondemand::value value, Circles& circles) {
-  ondemand::array array;
-  if (value.get_array().get(array)) return false;
+bool read_circles(ondemand::array array, Circles& circles) {
   for (auto element : array) {
     ondemand::array fields;
     if (element.get_array().get(fields)) return false;
@@ -99,7 +97,8 @@ std::optional<Line> PlainLineReader::read(std::string& text, std::string_view co
       if (value.get_uint64().get(line.number)) return std::nullopt;
       number_seen = true;
     } else if (key == "circles" && !circles_seen) {
-      if (!read_circles(value, line.circles)) return std::nullopt;
+      ondemand::array array;
+      if (value.get_array().get(array) || !read_circles(array, line.circles)) return std::nullopt;
       circles_seen = true;
     } else {
       return std::nullopt;  // another key, or one seen twice
@@ -109,6 +108,19 @@ std::optional<Line> PlainLineReader::read(std::string& text, std::string_view co
   const char* rest = nullptr;
   if (!number_seen || !circles_seen || document.current_location().get(rest) != OUT_OF_BOUNDS) return std::nullopt;
   return line;
+}
+
+bool PlainLineReader::append_circles(const char* text, std::size_t size, std::size_t capacity, Circles& circles) {
+  ondemand::document document;
+  ondemand::array array;
+  if (parser_->parser.iterate(padded_string_view(text, size, capacity)).get(document) ||
+      document.get_array().get(array))
+    return false;
+  const std::size_t before = circles.size();
+  if (!read_circles(array, circles) || circles.size() == before) return false;
+  // Nothing after the array, as after a line's object.
+  const char* rest = nullptr;
+  return document.current_location().get(rest) == OUT_OF_BOUNDS;
 }
 
 }  // namespace circles::formats

@@ -11,6 +11,7 @@
 
 #include "formats/protocol.hpp"
 
+#include <cstddef>
 #include <memory>
 #include <optional>
 #include <string>
@@ -29,6 +30,12 @@ class PlainLineReader {
   // anywhere), or nothing. `text` may gain capacity (simdjson reads a padding beyond its end) but keeps its
   // value.
   std::optional<Line> read(std::string& text, std::string_view counter);
+
+  // The circles of the array text[0, size), [[px, py, vx, vy, r], ...] with at least one circle, each read as
+  // read() reads a line's, appended to `circles`; false for anything else (`circles` may then hold some of
+  // them). text[size, capacity) is padding that simdjson reads but does not change; capacity >= size +
+  // SIMDJSON_PADDING. The pieces of a streamed document (formats/streamed.hpp) are read this way.
+  bool append_circles(const char* text, std::size_t size, std::size_t capacity, Circles& circles);
 
  private:
   struct Parser;

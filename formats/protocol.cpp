@@ -196,7 +196,7 @@ class Reader {
 
   bool parse_error(std::size_t position, const std::string& token, const nlohmann::json::exception& e) {
     // 406 is the one out_of_range error of the parser: a number token beyond the double range.
-    if (e.id == 406) return fail(expectation().first + token + " is beyond the double range");
+    if (e.id == 406) return fail(expectation().first + shortened_token(token) + " is beyond the double range");
     return fail("malformed JSON at column " + std::to_string(position) + ": " + parser_reason(e.what()));
   }
 
@@ -318,6 +318,13 @@ Line parse_line(std::string_view text, std::size_t line_number, std::string_view
   Reader reader(counter, reading, std::move(blanked));
   if (!nlohmann::json::sax_parse(text, &reader)) throw ProtocolError(line_number, reader.error.value_or("unreadable"));
   return std::move(reader.line);
+}
+
+std::string shortened_token(std::string_view token) {
+  constexpr std::size_t kWhole = 64, kHead = 21, kTail = 10;
+  if (token.size() <= kWhole) return std::string(token);
+  return std::string(token.substr(0, kHead)) + "..." + std::string(token.substr(token.size() - kTail)) + " (" +
+         std::to_string(token.size()) + " characters)";
 }
 
 std::string printable(std::string_view bytes) {

@@ -65,6 +65,11 @@ Line parse_line(std::string_view text, std::size_t line_number, std::string_view
 // whatever the input held.
 std::string printable(std::string_view bytes);
 
+// A number token as messages show it: whole up to 64 characters; a longer one (a number of a million digits)
+// as its first 21 and last 10 characters and its length, "100000000000000000000...0000000000 (1000000
+// characters)", so that the message stays one readable line.
+std::string shortened_token(std::string_view token);
+
 // A key or name as messages show it: printable(bytes) between double quotes.
 std::string in_quotes(std::string_view bytes);
 

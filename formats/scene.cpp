@@ -1,7 +1,9 @@
 #include "formats/scene.hpp"
 
 #include "formats/json_number.hpp"
+#include "formats/plain_line.hpp"
 #include "formats/protocol.hpp"  // printable
+#include "formats/streamed.hpp"
 #include "impl/random_scene.hpp"
 
 #include <nlohmann/json.hpp>
@@ -102,7 +104,8 @@ class Builder {
 
   bool parse_error(std::size_t byte, const std::string& token, const nlohmann::json::exception& e) {
     // 406 is the one out_of_range error of the parser: a number token beyond the double range.
-    if (e.id == 406) throw SceneError(source_ + ": " + place(byte) + ": " + token + " is beyond the double range");
+    if (e.id == 406)
+      throw SceneError(source_ + ": " + place(byte) + ": " + shortened_token(token) + " is beyond the double range");
     throw SceneError(source_ + ": malformed JSON at byte " + std::to_string(byte) + ": " + printable(e.what()));
   }
 
@@ -251,17 +254,79 @@ Scene parse_scene(std::string_view text, const std::string& source) {
   return scene;
 }
 
-Scene load_scene(const std::string& path) {
+namespace {
+
+// The doubles of a scene whose circles are all compact, read in pieces, with its name and steps (Streamed's
+// checks: the rest of the scene read by parse_scene, with no circle and with one); or nothing, for
+// parse_scene to read. A -0 stays -0 here.
+std::optional<SceneWorld> streamed_scene(std::istream& in, const std::string& source, std::size_t piece) {
+  if (in.tellg() != std::streampos(0)) return std::nullopt;  // a pipe, which cannot be read again from its start
+  PlainLineReader reader;
+  std::optional<Streamed> s = stream_document(in, false, reader, piece);
+  if (!s) return std::nullopt;
+  try {
+    Scene outer = parse_scene(s->outer, source);
+    if (!outer.circles.empty() || parse_scene(s->with_one_circle(), source).circles.size() != 1) return std::nullopt;
+    return SceneWorld{std::move(outer.name), outer.steps, std::move(s->circles)};
+  } catch (const SceneError&) {
+    return std::nullopt;
+  }
+}
+
+// The text of `in` from its start, for parse_scene.
+std::string whole_text(std::istream& in, const std::string& source) {
+  in.clear();
+  in.seekg(0);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw SceneError(source + ": read error");
+  return text.str();
+}
+
+std::ifstream open_scene(const std::string& path) {
   // A directory opens as a stream on Linux and reads as empty, which would be reported as an empty file.
   std::error_code ignored;
   if (std::filesystem::is_directory(path, ignored))
     throw SceneError(path + ": cannot read the file: it is a directory");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw SceneError(path + ": cannot open the file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw SceneError(path + ": read error");
-  return parse_scene(text.str(), path);
+  return in;
+}
+
+}  // namespace
+
+Scene read_scene(std::istream& in, const std::string& source, std::size_t piece) {
+  std::optional<SceneWorld> world = streamed_scene(in, source, piece);
+  if (!world) return parse_scene(whole_text(in, source), source);
+  // The circles parse_scene would make of the same doubles: the fast path refused every r < 0.
+  Scene scene{std::move(world->name), world->steps, {}, {}};
+  scene.circles.reserve(world->circles.size());
+  for (std::size_t k = 0; k < world->circles.size(); ++k)
+    scene.circles.push_back(spec::from_doubles(world->circles[k], k, spec::Radii::non_negative));
+  scene.circle_names.resize(scene.circles.size());
+  return scene;
+}
+
+SceneWorld read_scene_world(std::istream& in, const std::string& source, std::size_t piece) {
+  std::optional<SceneWorld> world = streamed_scene(in, source, piece);
+  if (!world) {
+    Scene scene = parse_scene(whole_text(in, source), source);
+    return SceneWorld{std::move(scene.name), scene.steps, doubles_of(scene)};
+  }
+  for (auto& circle : world->circles)
+    for (double& x : circle)
+      if (x == 0) x = 0;  // -0 as +0, as doubles_of gives it
+  return std::move(*world);
+}
+
+Scene load_scene(const std::string& path) {
+  std::ifstream in = open_scene(path);
+  return read_scene(in, path, kStreamPiece);
+}
+
+SceneWorld load_scene_world(const std::string& path) {
+  std::ifstream in = open_scene(path);
+  return read_scene_world(in, path, kStreamPiece);
 }
 
 Scene default_scene() { return parse_scene(default_scene_json, "<embedded default scene>"); }

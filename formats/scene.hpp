@@ -12,6 +12,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <istream>
 #include <limits>
 #include <optional>
 #include <stdexcept>
@@ -50,8 +51,29 @@ struct Scene {
 // resolved profile (r < 0). Nesting of any depth is read without recursion.
 Scene parse_scene(std::string_view text, const std::string& source);
 
-// The same, from a file; a missing file, a directory or a read error is a SceneError too.
+// The same, from a file; a missing file, a directory or a read error is a SceneError too. A file whose circles
+// are all in the compact form is read in pieces (formats/streamed.hpp), any other by parse_scene whole: the
+// scene and every message are parse_scene's either way.
 Scene load_scene(const std::string& path);
+
+// A scene as the engines take it, doubles, for `circles run`: its circles as doubles_of gives them (a -0 as
+// +0), with none of the exact circles of a Scene or its circles' names.
+struct SceneWorld {
+  std::optional<std::string> name;
+  std::optional<std::uint64_t> steps;
+  std::vector<std::array<double, 5>> circles;
+
+  friend bool operator==(const SceneWorld&, const SceneWorld&) = default;
+};
+
+// The same as doubles_of(load_scene(path)) with the scene's name and steps, and the same messages; a file of
+// compact circles is read in pieces into doubles and holds, beyond them, one piece of text (1 MiB).
+SceneWorld load_scene_world(const std::string& path);
+
+// The readers above on a stream (`in` must be seekable: a text the fast path does not take is read again from
+// its start), reading `piece` bytes at a time; tests and the fuzzer read strings this way.
+Scene read_scene(std::istream& in, const std::string& source, std::size_t piece);
+SceneWorld read_scene_world(std::istream& in, const std::string& source, std::size_t piece);
 
 // The embedded default scene (scenes/default.json, built into the binary).
 Scene default_scene();

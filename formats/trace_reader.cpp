@@ -28,16 +28,43 @@ TraceReader::TraceReader(const std::string& path) : source_(path) {
   in_ = owned_.get();
 }
 
-TraceReader::TraceReader(std::istream& in, std::string source) : in_(&in), source_(std::move(source)) {}
+TraceReader::TraceReader(std::istream& in, std::string source, std::size_t piece)
+    : in_(&in), source_(std::move(source)), piece_(piece) {}
 
 void TraceReader::fail(std::size_t line, const std::string& reason) const { throw TraceReadError(source_, line, reason); }
 
+// The next line by the fast path, with the stream moved past it; or nothing, with the stream where it was.
+std::optional<Line> TraceReader::stream_line() {
+  const std::streampos start = in_->tellg();
+  if (start == std::streampos(-1)) return std::nullopt;  // a pipe: getline alone
+  std::optional<Streamed> streamed;
+  try {
+    streamed = stream_document(*in_, true, plain_, piece_, circles_);
+  } catch (const std::bad_alloc&) {
+    fail(line_ + 1, "the world is too large to hold in memory");
+  }
+  std::optional<Line> world;
+  if (streamed) {
+    // The rest of the line, read by parse_line, with no circle and with one (formats/streamed.hpp).
+    try {
+      Line outer = parse_line(streamed->outer, line_ + 1, kStep);
+      if (outer.circles.empty() && parse_line(streamed->with_one_circle(), line_ + 1, kStep).circles.size() == 1)
+        world = Line{outer.number, std::move(streamed->circles)};
+    } catch (const ProtocolError&) {
+    }
+  }
+  in_->clear();
+  in_->seekg(world ? start + static_cast<std::streamoff>(streamed->bytes) : start);
+  return world;
+}
+
 std::optional<Line> TraceReader::next() {
   for (;;) {
+    std::optional<Line> streamed = stream_line();
     errno = 0;
-    if (!std::getline(*in_, text_)) break;
+    if (!streamed && !std::getline(*in_, text_)) break;
     ++line_;
-    const bool blank = text_.find_first_not_of(" \t\r\n") == std::string::npos;
+    const bool blank = !streamed && text_.find_first_not_of(" \t\r\n") == std::string::npos;
     // Blank lines before the first world: an empty file if nothing follows, an empty line if something does.
     if (blank && !last_step_) {
       if (!first_blank_) first_blank_ = line_;
@@ -48,7 +75,8 @@ std::optional<Line> TraceReader::next() {
       // parse_line refuses a blank line with the protocol's own message; so is the first blank line before
       // a world reported.
       if (first_blank_) parse_line("", first_blank_, kStep);
-      if (std::optional<Line> plain = plain_.read(text_, kStep)) world = std::move(*plain);
+      if (streamed) world = std::move(*streamed);
+      else if (std::optional<Line> plain = plain_.read(text_, kStep)) world = std::move(*plain);
       else world = parse_line(text_, line_, kStep);
     } catch (const ProtocolError& e) {
       fail(e.line, e.reason);

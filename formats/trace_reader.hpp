@@ -5,11 +5,15 @@
 // "step") and the trace's own rules, and stops at the first fault with a TraceReadError naming the file, the
 // line and the reason. The rules: at least one world; no empty line; each line one protocol line; step numbers
 // consecutive (t, t + 1, t + 2, ... from any first t); every world as long as the first (a step maps circle k
-// to circle k). Lines are read one at a time, so a trace longer than memory can still be read.
+// to circle k). Lines are read one at a time, so a trace longer than memory can still be read; and from a
+// seekable stream (a file) a line of compact circles is read in pieces into its doubles (formats/streamed.hpp),
+// so that a line of 10^7 circles, 1 GB of text, needs the 400 MB of its doubles and not its text too. A line the
+// pieces do not take is read again whole, as before: every message is parse_line's.
 #pragma once
 
 #include "formats/plain_line.hpp"
 #include "formats/protocol.hpp"
+#include "formats/streamed.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -35,8 +39,9 @@ class TraceReader {
  public:
   // Reads the file at `path`. Throws TraceReadError when it is missing, a directory or cannot be opened.
   explicit TraceReader(const std::string& path);
-  // Reads `in`, named `source` in messages (tests and the fuzzer read strings this way).
-  TraceReader(std::istream& in, std::string source);
+  // Reads `in`, named `source` in messages (tests and the fuzzer read strings this way), `piece` bytes at a
+  // time on the fast path.
+  TraceReader(std::istream& in, std::string source, std::size_t piece = kStreamPiece);
 
   // The next world, or nothing at the end of the trace. Throws TraceReadError for the first line that breaks
   // a rule above, and for a trace that ends before its first world (an empty file).
@@ -48,6 +53,7 @@ class TraceReader {
 
  private:
   [[noreturn]] void fail(std::size_t line, const std::string& reason) const;
+  std::optional<Line> stream_line();
 
   std::unique_ptr<std::istream> owned_;  // the file, when the reader opened it
   std::istream* in_;
@@ -56,7 +62,8 @@ class TraceReader {
   std::size_t first_blank_ = 0;  // the first blank line before the first world, 0 if none
   std::optional<std::uint64_t> last_step_;
   std::size_t circles_ = 0;  // the length of the first world
-  std::string text_;         // the line being read
+  std::size_t piece_ = kStreamPiece;
+  std::string text_;         // the line being read, when the streamed path does not take it
   PlainLineReader plain_;    // the fast path for plain lines; parse_line reads the others
 };
 

@@ -2,7 +2,9 @@
 // sequence of worlds or a TraceReadError naming the source, never another exception or a crash. The worlds
 // read keep the trace's rules: finite doubles with r >= 0, consecutive steps, one length. A failure after some
 // worlds names a line after theirs; and the worlds read, written again as a trace (formats::format_line) and read
-// back, are the same bit for bit.
+// back, are the same bit for bit. And the reader of a file, which reads a line of compact circles in pieces
+// (formats/streamed.hpp) cut here every 7 bytes, gives what the reader of a pipe gives, which reads each line
+// whole: the same worlds bit for bit and the same message.
 #include "formats/protocol.hpp"
 #include "formats/trace_reader.hpp"
 #include "fuzz/check.hpp"
@@ -23,11 +25,25 @@ namespace {
 
 const std::string kSource = "fuzz.jsonl";
 
-// Reads `text` to its end or to its first fault: the worlds read, and the error if there was one.
+// A stream that cannot seek, as a pipe: the reader reads its lines whole.
+class Pipe : public std::stringbuf {
+ public:
+  using std::stringbuf::stringbuf;
+
+ protected:
+  pos_type seekoff(off_type, std::ios_base::seekdir, std::ios_base::openmode) override { return pos_type(-1); }
+  pos_type seekpos(pos_type, std::ios_base::openmode) override { return pos_type(-1); }
+};
+
+// Reads `text` to its end or to its first fault: the worlds read, and the error if there was one. From a
+// seekable stream in pieces of `piece` bytes, or with piece == 0 from a pipe.
 std::vector<formats::Line> read(const std::string& text, std::optional<formats::TraceReadError>& error,
-                            std::vector<std::size_t>& lines) {
-  std::istringstream in(text);
-  formats::TraceReader reader(in, kSource);
+                                std::vector<std::size_t>& lines, std::size_t piece = 7) {
+  Pipe pipe(text);
+  std::istringstream file(text);
+  std::istream pipe_stream(&pipe);
+  formats::TraceReader reader(piece ? static_cast<std::istream&>(file) : pipe_stream, kSource,
+                              piece ? piece : formats::kStreamPiece);
   std::vector<formats::Line> worlds;
   try {
     while (std::optional<formats::Line> w = reader.next()) {
@@ -47,6 +63,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::optional<formats::TraceReadError> error;
   std::vector<std::size_t> lines;
   const std::vector<formats::Line> worlds = read(text, error, lines);
+
+  // The same from a pipe, each line read whole.
+  std::optional<formats::TraceReadError> whole_error;
+  std::vector<std::size_t> whole_lines;
+  const std::vector<formats::Line> whole = read(text, whole_error, whole_lines, 0);
+  fuzz::require(whole_error.has_value() == error.has_value() &&
+                    (!error || std::string_view(error->what()) == whole_error->what()),
+                "in pieces, the same message", error ? error->what() : "");
+  fuzz::require(whole.size() == worlds.size() && whole_lines == lines, "in pieces, as many worlds on the same lines");
+  for (std::size_t t = 0; t < worlds.size(); ++t)
+    fuzz::require(whole[t].number == worlds[t].number && fuzz::same_bits(whole[t].circles, worlds[t].circles),
+                  "in pieces, the same worlds bit for bit");
 
   if (error) {
     const std::string_view message = error->what();
