@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """scripts/benchmarks without running a benchmark: its engine section (issue 11's targets, judged at their
 bounds), the configurations it asks for, the filter that selects them, its check that each was measured, and
-its plot; and, given the benchmark programs, that every configuration it asks for is one they register.
+its plot, its exit without matplotlib; and, given the benchmark programs, that every configuration it asks for is one they register.
 
     benchmarks_script_test.py REPOSITORY report
     benchmarks_script_test.py REPOSITORY names ENGINE_BENCH [BOX2D_BENCH]
@@ -114,6 +114,29 @@ def check_report(b):
         assert not pattern.search(other), f"the filter selects {other}"
 
 
+def check_without_matplotlib(b):
+    """Without matplotlib the run stops before building anything, exit status 1, the document as it was."""
+    import contextlib
+    import io
+    import tempfile
+    with tempfile.TemporaryDirectory() as scratch:
+        doc = Path(scratch) / "benchmarks.md"
+        doc.write_text("# Benchmarks\n")
+        stderr = io.StringIO()
+        find_spec = b.importlib.util.find_spec
+        b.importlib.util.find_spec = lambda name: None if name == "matplotlib" else find_spec(name)
+        try:
+            with contextlib.redirect_stderr(stderr):
+                status = b.main(["--output", str(doc), "--build-dir", str(Path(scratch) / "build")])
+        finally:
+            b.importlib.util.find_spec = find_spec
+        assert status == 1, status
+        assert stderr.getvalue() == ("scripts/benchmarks: the engine section's plot needs matplotlib (apt-get install "
+                                     f"python3-matplotlib; scripts/setup installs it); {doc} is unchanged\n"), stderr.getvalue()
+        assert doc.read_text() == "# Benchmarks\n"
+        assert not (Path(scratch) / "build").exists(), "it configured a build before finding matplotlib missing"
+
+
 def engine_keys(b):
     return b.configurations(b.SIZES)[0]
 
@@ -135,6 +158,7 @@ def main():
     b = load(repository)
     if mode == "report":
         check_report(b)
+        check_without_matplotlib(b)
     elif mode == "names":
         check_names(b, sys.argv[3], sys.argv[4] if len(sys.argv) > 4 else None)
     else:
