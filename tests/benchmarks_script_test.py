@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """scripts/benchmarks without running a benchmark: its engine section (issue 11's targets, judged at their
-bounds), the configurations it asks for, the filter that selects them, its check that each was measured, and
-its plot, its exit without matplotlib; and, given the benchmark programs, that every configuration it asks for is one they register.
+bounds), the configurations it asks for, the filter that selects them, its check that each was measured, its
+plot, and its exit without matplotlib; and, given the benchmark programs, that every configuration it asks for
+is one they register.
 
     benchmarks_script_test.py REPOSITORY report
     benchmarks_script_test.py REPOSITORY names ENGINE_BENCH [BOX2D_BENCH]
