@@ -1,9 +1,9 @@
-// Box2D 2.4.1 (the Debian package) on the scenes of engine_bench, for issue 11's target ">= 200x Box2D's
-// time per step at 10^5 circles, 10% coverage" and its size and coverage sweeps: dynamic circle bodies with the scene's radii, positions and
-// velocities, zero gravity, restitution 1 and no friction (the spec's collisions are elastic velocity
-// exchanges), mass 1 (the spec's unit masses), and world steps of 1/60 with the iteration counts of Box2D's
-// own testbed (8 velocity, 3 position). Box2D works in float; the scene's doubles are rounded to it.
-// Timed like every other stepper (bench/harness.hpp); names follow engine_bench's, family "box2d".
+// Box2D 2.4.1 (the Debian package) on the scenes of engine_bench, for issue 11's target ">= 200x Box2D's time per
+// step at 10^5 circles, 10% coverage" and its size and coverage sweeps: dynamic circle bodies with the scene's
+// radii, positions and velocities, zero gravity, restitution 1 and no friction (the spec's collisions are elastic
+// velocity exchanges), mass 1 (the spec's unit masses), and world steps of 1/60 with the iteration counts of Box2D's
+// own testbed (8 velocity, 3 position). Box2D works in float; the scene's doubles are rounded to it. Timed like
+// every other stepper (bench/harness.hpp); names follow engine_bench's, family "box2d".
 #include "bench/harness.hpp"
 #include "impl/random_scene.hpp"
 

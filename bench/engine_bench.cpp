@@ -54,7 +54,8 @@ Circles coarse_scene(std::size_t n, double coverage) {
 template <class EngineType>
 void register_engine(const std::string& family, std::size_t n, double coverage, unsigned threads,
                      Circles (*make_scene)(std::size_t, double) = scene) {
-  register_steps(configuration_name(family, coverage, threads, n), n, copies_for(n, kStepsPerStepper), kStepsPerStepper,
+  register_steps(configuration_name(family, coverage, threads, n), n, copies_for(n, kStepsPerStepper),
+                 kStepsPerStepper,
                  [n, coverage, threads, make_scene] {
                    return std::make_unique<EngineType>(impl::World(make_scene(n, coverage)),
                                                    impl::EngineOptions{.threads = threads});

@@ -133,7 +133,8 @@ def check_without_matplotlib(b):
             b.importlib.util.find_spec = find_spec
         assert status == 1, status
         assert stderr.getvalue() == ("scripts/benchmarks: the engine section's plot needs matplotlib (apt-get install "
-                                     f"python3-matplotlib; scripts/setup installs it); {doc} is unchanged\n"), stderr.getvalue()
+                                     f"python3-matplotlib; scripts/setup installs it); {doc} is unchanged\n"), \
+            stderr.getvalue()
         assert doc.read_text() == "# Benchmarks\n"
         assert not (Path(scratch) / "build").exists(), "it configured a build before finding matplotlib missing"
 
