@@ -89,6 +89,7 @@ def check_report(b):
     svg = b.plot_svg(table, b.SIZES)
     assert svg == b.plot_svg(table, b.SIZES), "two plots of the same figures differ"
     assert "<dc:date>" not in svg
+    assert not [line for line in svg.splitlines() if line.endswith(" ")], "lines of the plot end in spaces"
     for _, label in b.SERIES:
         assert label in svg, f"the plot has no line labelled {label!r}"
 
