@@ -15,6 +15,7 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <exception>
 #include <cstddef>
@@ -32,6 +33,22 @@ inline constexpr std::uint64_t kSceneSeed = 1;
 // E[r²] = (6³ − 2³)/(3·4) = 17.3 for r uniform in [2, 6]).
 inline constexpr std::size_t kStepsPerStepper = 30;
 inline constexpr std::size_t kCircleStepsPerRun = 3'000'000;  // 10^5 circles × 30 steps
+
+// Coverage in percent, "0.1" below 1% and whole numbers above.
+inline std::string coverage_percent(double coverage) {
+  const long per_mille = std::lround(coverage * 1000);
+  return per_mille % 10 == 0 ? std::to_string(per_mille / 10) : "0." + std::to_string(per_mille);
+}
+
+// The name of a configuration, <family>/coverage:<percent>/threads:<t>/n:<circles> (engine_bench and
+// box2d_bench alike), and its counters coverage_pct and engine_threads, which scripts/benchmarks reads.
+inline std::string configuration_name(const std::string& family, double coverage, unsigned threads, std::size_t n) {
+  return family + "/coverage:" + coverage_percent(coverage) + "/threads:" + std::to_string(threads) +
+         "/n:" + std::to_string(n);
+}
+inline std::vector<std::pair<std::string, double>> configuration_labels(double coverage, unsigned threads) {
+  return {{"coverage_pct", coverage * 100}, {"engine_threads", threads}};
+}
 
 // Steppers per repetition for scenes of n circles, so a repetition covers about kCircleStepsPerRun.
 inline std::size_t copies_for(std::size_t n, std::size_t steps) {
