@@ -2,12 +2,12 @@
 
 #include "conform/engines.hpp"
 #include "impl/engine.hpp"
+#include "impl/exact_grid_reference.hpp"
 #include "impl/grid_reference.hpp"
 #include "impl/state_hash.hpp"
 #include "properties/chain.hpp"
 
 #include <limits>
-#include <memory>
 #include <new>
 #include <stdexcept>
 #include <utility>
@@ -19,36 +19,31 @@ namespace {
 // The world the reference expects after `input`, or where its step overflows.
 class Reference {
  public:
-  Reference(TraceReference kind, const Circles& first) : kind_(kind) {
-    if (kind_ == TraceReference::exact) exact_ = reference(engine("exact"), first);
+  Reference(TraceReference kind, const Circles& first) {
+    if (kind == TraceReference::exact) exact_.emplace(first);
   }
 
   // The expected world after `input` (the trace's world on the line before): nothing, with `overflow` set,
-  // when the reference's step leaves the double range.
+  // when the reference's step leaves the double range. The exact reference ignores `input`: it follows the
+  // exact sequence from the first world, whatever the trace held since.
   std::optional<Circles> next(const Circles& input, std::string& overflow) {
-    if (kind_ == TraceReference::rounded) {
-      try {
+    try {
+      if (!exact_) {
         // In two statements, so that the copy of `input` is gone before the result is copied out of its World:
         // at 10^7 circles each world is 400 MB, and check-trace must fit in 2 GB (docs/benchmarks.md).
         const impl::World next = impl::step_grid(impl::World{input});
         return next.circles();
-      } catch (const impl::PositionOverflow& e) {
-        overflow = overflow_reason(e.index, std::string_view(e.field) == "px" ? spec::Field::px : spec::Field::py);
-        return std::nullopt;
       }
-    }
-    try {
-      exact_->step();  // the exact sequence from the first world, whatever the trace held since
-    } catch (const StepOverflow& e) {
-      overflow = overflow_reason(e.index, e.field);
+      exact_->step();
+      return exact_->rounded();
+    } catch (const impl::PositionOverflow& e) {
+      overflow = overflow_reason(e.index, std::string_view(e.field) == "px" ? spec::Field::px : spec::Field::py);
       return std::nullopt;
     }
-    return exact_->circles();
   }
 
  private:
-  TraceReference kind_;
-  std::unique_ptr<Stepper> exact_;
+  std::optional<impl::ExactGrid> exact_;
 };
 
 }  // namespace

@@ -9,8 +9,9 @@
 //           conform/conform.cpp) with a uniform grid in front, held bit-equal to it by tests; O(n log n) per
 //           step for alike radii.
 //   exact   each world must be the oracle's exact sequence from the first world, rounded: the trace of an
-//           engine that keeps the exact state, as `circles run --engine exact` records. The reference is the
-//           oracle itself (cli::reference), O(n²) exact rationals per step.
+//           engine that keeps the exact state, as `circles run --engine exact` records. The reference is
+//           impl::ExactGrid: the oracle's exact sequence in integers, with pairs from the same uniform grid,
+//           held equal to spec::resolved_step by tests; O(n log n) per step for alike radii.
 // Values are compared by value (−0 == +0), every field exactly: velocities and radii are copies, and each
 // position must be the nearest double.
 #pragma once

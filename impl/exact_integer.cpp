@@ -118,6 +118,15 @@ double round_quotient(Narrow n, NarrowMagnitude d) noexcept {
 
 double round_quotient(const Wide& n, const Wide& d) {
   if (n == 0) return 0.0;
+  // |n| < 2^126 and 0 < d < 2^127 fit the fixed-width division above; its two low limbs are then the values.
+  static_assert(sizeof(mp_limb_t) == 8, "64-bit GMP limbs");
+  if (mpz_sizeinbase(raw(n), 2) <= 126 && mpz_sizeinbase(raw(d), 2) <= 127) {
+    const auto limbs = [](const Wide& z) {
+      return (NarrowMagnitude{mpz_getlimbn(raw(z), 1)} << 64) | mpz_getlimbn(raw(z), 0);
+    };
+    const auto a = static_cast<Narrow>(limbs(n));
+    return round_quotient(n < 0 ? -a : a, limbs(d));
+  }
   spec::Q q(n);
   q /= spec::Q(d);
   return spec::nearest_double(q);

@@ -82,8 +82,9 @@ inline Decision intersect_approximate(double ax, double ay, double rho_a, double
   return static_cast<Decision>((decided & positive) | (!decided) << 1);
 }
 
-// RN(n/d) for d > 0. Narrow is exact integer division with a sticky remainder; Wide goes through
-// spec::nearest_double (magnitudes beyond the double range give ±infinity there).
+// RN(n/d) for d > 0. Narrow is exact integer division with a sticky remainder; Wide takes the same division
+// when |n| < 2^126 and d < 2^127, else goes through spec::nearest_double (magnitudes beyond the double range
+// give ±infinity there).
 double round_quotient(Narrow n, NarrowMagnitude d) noexcept;
 double round_quotient(const Wide& n, const Wide& d);
 

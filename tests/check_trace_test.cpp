@@ -7,6 +7,7 @@
 #include "cli/run.hpp"
 #include "formats/scene.hpp"
 #include "formats/trace_reader.hpp"
+#include "impl/random_scene.hpp"
 #include "impl/state_hash.hpp"
 #include "tests/temp_dir.hpp"
 #include "tests/thrown.hpp"
@@ -130,6 +131,34 @@ TEST(check_trace, a_trace_of_the_exact_engine_agrees_with_the_exact_sequence) {
   EXPECT_TRUE(o.out.starts_with("circles check-trace: " + path +
                                 ": agrees with the oracle's exact sequence, rounded, at each of its 100 steps"))
       << o.out;
+}
+
+TEST(check_trace, the_exact_reference_on_its_grid_agrees_with_the_exact_engine_on_a_big_world_and_names_a_change) {
+  // 2000 circles (the grid reference's cells prune most pairs) for 5 steps; then one position of step 3 moved
+  // by one ulp, which must be named by its line, step, circle and field.
+  TempDir dir;
+  const Circles world = impl::random_scene(2000, 0.5, 3);
+  std::vector<std::string> lines = lines_of(record(dir, "t.jsonl", world, 5, "exact"));
+  ASSERT_EQ(lines.size(), 6u);
+  const Outcome o = command((dir.path / "t.jsonl").string(), TraceReference::exact);
+  EXPECT_EQ(o.code, 0) << o.out << o.err;
+  Line w3 = parse_line(lines[3], 4, kStep);
+  const double was = w3.circles[1234][1], up = std::nextafter(was, INFINITY);
+  w3.circles[1234][1] = up;
+  lines[3] = format_line(kStep, 3, w3.circles);
+  const std::string path = dir.write("tampered.jsonl", joined(lines));
+  const Outcome t = command(path, TraceReference::exact);
+  EXPECT_EQ(t.code, 1);
+  EXPECT_TRUE(t.out.starts_with("circles check-trace: " + path + ":4: step 3 differs from the oracle's exact "
+                                "sequence from line 1, rounded: circle 1234, field py: expected "))
+      << t.out;
+  TraceReader reader(path);
+  const TraceCheck check = check_trace(reader, TraceReference::exact);
+  ASSERT_TRUE(check.divergence && check.divergence->difference);
+  EXPECT_EQ(check.divergence->difference->circle, 1234u);
+  EXPECT_EQ(check.divergence->difference->expected, was);
+  EXPECT_EQ(check.divergence->difference->actual, up);
+  EXPECT_EQ(check.last_step, 2u);
 }
 
 // "0123456789abcdef": a hash as the checker prints it, written here with printf.

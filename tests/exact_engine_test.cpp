@@ -27,6 +27,7 @@
 #include "properties/generators.hpp"
 #include "spec/circle.hpp"
 #include "spec/oracle.hpp"
+#include "tests/exact_worlds.hpp"
 #include "tests/thrown.hpp"
 
 namespace circles::impl {
@@ -39,18 +40,9 @@ using exact::NarrowMagnitude;
 using exact::Wide;
 namespace gen = properties::gen;
 using spec::Vec2;
+using circles::testing::exact_of;
+using circles::testing::nearest;
 
-Circles nearest(const spec::Sequence& w) {
-  Circles out;
-  for (const spec::Circle& c : w) out.push_back(spec::nearest_doubles(c));
-  return out;
-}
-
-spec::Sequence exact_of(const Circles& w) {
-  spec::Sequence out;
-  for (std::size_t k = 0; k < w.size(); ++k) out.push_back(spec::from_doubles(w[k], k, spec::Radii::non_negative));
-  return out;
-}
 
 // The first circle and field (px before py) whose nearest double is infinite, if any.
 std::optional<std::pair<std::size_t, std::string>> first_overflow(const spec::Sequence& w) {

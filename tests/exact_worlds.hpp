@@ -1,0 +1,26 @@
+// Between the doubles of a world and the oracle's rationals, for the tests of the exact engine and the exact
+// grid reference: nearest(w) rounds each field to nearest (spec::nearest_doubles), exact_of(w) takes each
+// double at its exact value (spec::from_doubles, radii r ≥ 0).
+#pragma once
+
+#include "spec/circle.hpp"
+#include "spec/oracle.hpp"
+
+#include <array>
+#include <vector>
+
+namespace circles::testing {
+
+inline std::vector<std::array<double, 5>> nearest(const spec::Sequence& w) {
+  std::vector<std::array<double, 5>> out;
+  for (const spec::Circle& c : w) out.push_back(spec::nearest_doubles(c));
+  return out;
+}
+
+inline spec::Sequence exact_of(const std::vector<std::array<double, 5>>& w) {
+  spec::Sequence out;
+  for (std::size_t k = 0; k < w.size(); ++k) out.push_back(spec::from_doubles(w[k], k, spec::Radii::non_negative));
+  return out;
+}
+
+}  // namespace circles::testing
