@@ -216,7 +216,7 @@ void ExactEngine::start(Columns<Int> s, std::vector<double> radius, std::vector<
   key_.clear();
   state_ = std::move(s);
   choose_width();
-  std::visit([this](auto& columns) { this->update<false>(columns); }, state_);
+  std::visit([this](auto& columns) { this->update<false>(columns, true); }, state_);
 }
 
 unsigned ExactEngine::width() const noexcept {
@@ -326,15 +326,14 @@ bool ExactEngine::precedes(const Columns<Int>& s, std::size_t a, std::size_t b) 
   return i < j;
 }
 
-// The centre's error bound (kBoxRelative) plus the radius's.
-inline double ExactEngine::error(double x, double y, std::uint32_t circle) const noexcept {
-  const double centre = std::max(std::fabs(x), std::fabs(y)) * kBoxRelative + kBoxAbsolute;
+// The centre's error bound (kBoxRelative) for a largest coordinate m, plus the radius's.
+inline double ExactEngine::error(double m, std::uint32_t circle) const noexcept {
+  const double centre = m * kBoxRelative + kBoxAbsolute;
   return radii_exact_ ? centre : centre + radius_error_[circle];
 }
 
 template <class Int>
-inline double ExactEngine::approximate(const Int& x, const Int& y, std::uint32_t circle, double& ax,
-                                       double& ay) const noexcept {
+inline void ExactEngine::approximate(const Int& x, const Int& y, double& ax, double& ay) const noexcept {
   if constexpr (kFixed<Int>) {
     ax = exact::approximate(x, inverse_den_);
     ay = exact::approximate(y, inverse_den_);
@@ -342,7 +341,6 @@ inline double ExactEngine::approximate(const Int& x, const Int& y, std::uint32_t
     ax = exact::approximate(x, den_);
     ay = exact::approximate(y, den_);
   }
-  return error(ax, ay, circle);
 }
 
 template <class Int>
@@ -373,7 +371,9 @@ void ExactEngine::step_with(Columns<Int>& s) {
     for (std::vector<std::uint32_t>& list : touched_) list.clear();
   }
   take_velocities(s);
-  update<true>(s);
+  // Where most slots are in no listed pair, only the listed ones need their approximations before the next
+  // rebuild (which refreshes them all): a lonely circle's step is X ← X + V alone.
+  update<true>(s, pairs_.lonely() * 4 < id_.size());
   ++stats_.steps;
   stats_.pairs_tested += tested;
   stats_.contacts += contacts;
@@ -426,25 +426,50 @@ void ExactEngine::take_velocities(Columns<Int>& s) {
 }
 
 template <bool Move, class Int>
-void ExactEngine::update(Columns<Int>& s) {
+void ExactEngine::update(Columns<Int>& s, bool every) {
   const std::size_t n = id_.size();
   const std::size_t chunks = chunk_count(n, threads_);
   Approximations& a = approx_;
   a.x.resize(n);
   a.y.resize(n);
-  std::vector<double> largest(chunks, 0.0);
+  fresh_ = every;
+  std::vector<std::array<double, 2>> largest(chunks);  // per chunk: max(|a_x|, |a_y|), the radius error
   for_each_chunk(chunks, threads_, [&](std::size_t c) {
-    double bound = 0;
-    for (std::size_t t = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1); t < e; ++t) {
-      if constexpr (Move) {
-        s.x[t] += s.vx[t];
-        s.y[t] += s.vy[t];
+    double reach = 0, radius = 0;
+    const auto refresh = [&](std::size_t t) {
+      approximate(s.x[t], s.y[t], a.x[t], a.y[t]);
+      reach = std::max({reach, std::fabs(a.x[t]), std::fabs(a.y[t])});
+      if (!radii_exact_) radius = std::max(radius, radius_error_[id_[t]]);
+    };
+    const std::size_t b = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1);
+    if (every) {
+      for (std::size_t t = b; t < e; ++t) {
+        if constexpr (Move) {
+          s.x[t] += s.vx[t];
+          s.y[t] += s.vy[t];
+        }
+        refresh(t);
       }
-      bound = std::max(bound, approximate(s.x[t], s.y[t], id_[t], a.x[t], a.y[t]));
+    } else {
+      if constexpr (Move)
+        for (std::size_t t = b; t < e; ++t) {
+          s.x[t] += s.vx[t];
+          s.y[t] += s.vy[t];
+        }
+      const auto first = std::lower_bound(listed_.begin(), listed_.end(), b);
+      for (auto t = first; t != listed_.end() && *t < e; ++t) refresh(*t);
     }
-    largest[c] = bound;
+    largest[c] = {reach, radius};
   });
-  error_bound_ = *std::max_element(largest.begin(), largest.end());
+  // error(m, ·) is RN of sums and products of non-negative terms, monotone in m and in the radius error, so
+  // that of the largest of each is at least every slot's.
+  double reach = 0, radius = 0;
+  for (const auto& [m, r] : largest) {
+    reach = std::max(reach, m);
+    radius = std::max(radius, r);
+  }
+  const double centre = reach * kBoxRelative + kBoxAbsolute;
+  error_bound_ = radii_exact_ ? centre : centre + radius;
 }
 
 template <class Int>
@@ -475,10 +500,13 @@ void ExactEngine::rebuild(Columns<Int>& s) {
   // vmax alone (moves are exact), boxes of the radii inflated by it and by the centres' errors, keys, the
   // slots in their cell order, and the broad phase over the inflated radii, each pair it offers listed from
   // its first step.
+  if (!fresh_) update<false>(s, true);
   const std::size_t n = id_.size();
   const std::size_t chunks = chunk_count(n, threads_);
   Approximations& a = approx_;
-  const double vmax = speed_bound(s);
+  // Velocities are only copied: the first world's bound holds for every later one.
+  if (!(vmax_ >= 0)) vmax_ = speed_bound(s);
+  const double vmax = vmax_;
   std::uint64_t horizon = !options_.keep_pairs ? 0 : options_.horizon > 0 ? options_.horizon : schedule_.horizon();
   double step = step_bound(horizon, vmax, 0, 0);
   double skin = skin_for(horizon, vmax, 0, 0);
@@ -491,7 +519,9 @@ void ExactEngine::rebuild(Columns<Int>& s) {
   }
   // ρ + kCentreSpread·e ≥ ρ + (1 + √2)·e ≥ r + |c − p|: the circle's disc around its approximate centre
   // holds the exact one; with the skin added, it holds every position of the horizon.
-  const auto padding = [&](std::size_t t) { return error(a.x[t], a.y[t], id_[t]) * exact::kCentreSpread; };
+  const auto padding = [&](std::size_t t) {
+    return error(std::max(std::fabs(a.x[t]), std::fabs(a.y[t])), id_[t]) * exact::kCentreSpread;
+  };
   inflated_.resize(n);
   for (std::size_t t = 0; t < n; ++t) inflated_[t] = outward_upper(a.rho[t], padding(t) + skin);
   if (horizon != planned_horizon_) {
@@ -564,6 +594,11 @@ void ExactEngine::rebuild(Columns<Int>& s) {
     if (intersect_filter(px[i], py[i], r[i], px[k], py[k], r[k]) == Decision::intersect) return std::uint32_t{0};
     return first_step(px[i], py[i], r[i], px[k], py[k], r[k], step, horizon);
   });
+  std::vector<unsigned char> in_pair(n, 0);
+  pairs_.for_each([&in_pair](std::size_t i, std::size_t k) { in_pair[i] = in_pair[k] = 1; });
+  listed_.clear();
+  for (std::size_t t = 0; t < n; ++t)
+    if (in_pair[t]) listed_.push_back(static_cast<std::uint32_t>(t));
   built_at_ = stats_.steps;
   stats_.pairs_listed += pairs_.size();
   ++stats_.rebuilds;

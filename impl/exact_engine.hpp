@@ -81,17 +81,17 @@ class ExactEngine {
     std::vector<Int> x, y, vx, vy, r, next_vx, next_vy;
   };
   // By slot, doubles near the exact state: circle id_[t]'s centre is within e of (x[t], y[t]) on each axis
-  // and its radius within e of rho[t], for e = error(x[t], y[t], id_[t]) ≤ error_bound_. The pair test's
-  // filter reads them every step; the rebuild's boxes and gaps too.
+  // and its radius within e of rho[t], for e = error(max(|x[t]|, |y[t]|), id_[t]). The pair test's filter
+  // reads them every step, with error_bound_ ≥ every e; the rebuild's boxes and gaps too. Between rebuilds
+  // only the slots in a listed pair may be kept up to date (fresh_ false; the rebuild refreshes the rest).
   struct Approximations {
     std::vector<double> x, y, rho;
   };
-  // A bound on the errors of the approximations (x, y) and ρ of `circle`.
-  double error(double x, double y, std::uint32_t circle) const noexcept;
-  // The approximations of one circle's centre from its integers (exact::approximate); returns their error
-  // bound.
+  // A bound on the errors of the approximations (x, y) and ρ of `circle`, for m = max(|x|, |y|).
+  double error(double m, std::uint32_t circle) const noexcept;
+  // The approximations of one circle's centre from its integers (exact::approximate).
   template <class Int>
-  double approximate(const Int& x, const Int& y, std::uint32_t circle, double& ax, double& ay) const noexcept;
+  void approximate(const Int& x, const Int& y, double& ax, double& ay) const noexcept;
   // The same integers in another width (each value must fit).
   template <class To, class From>
   static Columns<To> converted(const Columns<From>& s);
@@ -123,9 +123,10 @@ class ExactEngine {
   // state first checks that no new position rounds to ±infinity (PositionOverflow, nothing changed).
   template <class Int>
   void take_velocities(Columns<Int>& s);
-  // With Move, X ← X + V in place for every slot; then every slot's approximations and error_bound_.
+  // With Move, X ← X + V in place for every slot; then the approximations of every slot (every) or of the
+  // slots in a listed pair, and error_bound_ over those.
   template <bool Move, class Int>
-  void update(Columns<Int>& s);
+  void update(Columns<Int>& s, bool every);
 
   EngineOptions options_;
   unsigned threads_ = 1;
@@ -150,7 +151,10 @@ class ExactEngine {
   CellOrder order_;
   PairList pairs_;
   Approximations approx_;
-  double error_bound_ = 0;  // the largest error bound over the slots (update)
+  double error_bound_ = 0;  // at least the error bound of every slot update kept up to date
+  bool fresh_ = false;      // every slot's approximations are up to date
+  std::vector<std::uint32_t> listed_;  // the slots in a listed pair, ascending
+  double vmax_ = -1;                    // speed_bound of the first world (−1: not yet computed)
   std::vector<std::uint32_t> id_, permutation_, least_, scratch_id_;
   std::vector<std::vector<std::uint32_t>> touched_;
   // The rebuild's radii (inflated by the skin and the centres' errors; padded by the errors alone) and
