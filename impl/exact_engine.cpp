@@ -309,7 +309,10 @@ ExactEngine::Columns<To> ExactEngine::converted(const Columns<From>& s) {
 }
 
 void ExactEngine::step() {
-  if (narrow() && stats_.steps >= proven_until_) choose_width();
+  if (narrow() && stats_.steps >= proven_until_) {
+    std::visit([this](auto& s) { catch_up(s); }, state_);  // the proof measures every position
+    choose_width();
+  }
   std::visit([this](auto& s) { step_with(s); }, state_);
 }
 
@@ -371,9 +374,9 @@ void ExactEngine::step_with(Columns<Int>& s) {
     for (std::vector<std::uint32_t>& list : touched_) list.clear();
   }
   take_velocities(s);
-  // Where most slots are in no listed pair, only the listed ones need their approximations before the next
-  // rebuild (which refreshes them all): a lonely circle's step is X ← X + V alone.
-  update<true>(s, pairs_.lonely() * 4 < id_.size());
+  // Where most slots are in no listed pair, only the listed ones move and get their approximations now; the
+  // rest catch up at the next rebuild. A GMP state moves every slot: its overflow check reads them all.
+  update<true>(s, !kFixed<Int> || pairs_.lonely() * 4 < id_.size());
   ++stats_.steps;
   stats_.pairs_tested += tested;
   stats_.contacts += contacts;
@@ -433,6 +436,7 @@ void ExactEngine::update(Columns<Int>& s, bool every) {
   a.x.resize(n);
   a.y.resize(n);
   fresh_ = every;
+  if (Move && !every) ++pending_;
   std::vector<std::array<double, 2>> largest(chunks);  // per chunk: max(|a_x|, |a_y|), the radius error
   for_each_chunk(chunks, threads_, [&](std::size_t c) {
     double reach = 0, radius = 0;
@@ -451,13 +455,15 @@ void ExactEngine::update(Columns<Int>& s, bool every) {
         refresh(t);
       }
     } else {
-      if constexpr (Move)
-        for (std::size_t t = b; t < e; ++t) {
-          s.x[t] += s.vx[t];
-          s.y[t] += s.vy[t];
+      // Only the slots in a listed pair move now; the others, whose velocities cannot change before the next
+      // rebuild, take their pending moves there at once (catch_up).
+      for (auto t = std::lower_bound(listed_.begin(), listed_.end(), b); t != listed_.end() && *t < e; ++t) {
+        if constexpr (Move) {
+          s.x[*t] += s.vx[*t];
+          s.y[*t] += s.vy[*t];
         }
-      const auto first = std::lower_bound(listed_.begin(), listed_.end(), b);
-      for (auto t = first; t != listed_.end() && *t < e; ++t) refresh(*t);
+        refresh(*t);
+      }
     }
     largest[c] = {reach, radius};
   });
@@ -470,6 +476,37 @@ void ExactEngine::update(Columns<Int>& s, bool every) {
   }
   const double centre = reach * kBoxRelative + kBoxAbsolute;
   error_bound_ = radii_exact_ ? centre : centre + radius;
+}
+
+template <class Int>
+void ExactEngine::catch_up(Columns<Int>& s) {
+  if (pending_ == 0) return;
+  // X ← X + k·V for the slots in no listed pair, k = pending_: the k moves they did not take, all with the
+  // velocity they had (a slot in no pair has no contact). |k·V| ≤ k·max |V| fits the width: its proof covers
+  // every step since it was made, and catch_up runs before each proof.
+  const Int k = static_cast<Int>(pending_);
+  const std::size_t n = id_.size();
+  const std::size_t chunks = chunk_count(n, threads_);
+  for_each_chunk(chunks, threads_, [&](std::size_t c) {
+    const std::size_t b = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1);
+    auto listed = std::lower_bound(listed_.begin(), listed_.end(), b);
+    for (std::size_t t = b; t < e; ++t) {
+      if (listed != listed_.end() && *listed == t) {
+        ++listed;
+        continue;
+      }
+      s.x[t] += k * s.vx[t];
+      s.y[t] += k * s.vy[t];
+    }
+  });
+  pending_ = 0;
+}
+
+std::vector<std::uint64_t> ExactEngine::pending_moves() const {
+  std::vector<std::uint64_t> moves(id_.size(), pending_);
+  if (pending_ > 0)
+    for (const std::uint32_t t : listed_) moves[t] = 0;
+  return moves;
 }
 
 template <class Int>
@@ -500,6 +537,7 @@ void ExactEngine::rebuild(Columns<Int>& s) {
   // vmax alone (moves are exact), boxes of the radii inflated by it and by the centres' errors, keys, the
   // slots in their cell order, and the broad phase over the inflated radii, each pair it offers listed from
   // its first step.
+  catch_up(s);
   if (!fresh_) update<false>(s, true);
   const std::size_t n = id_.size();
   const std::size_t chunks = chunk_count(n, threads_);
@@ -626,10 +664,12 @@ World ExactEngine::world() const {
           else
             return exact::round_quotient(x, velocity ? den_v_ : den_);
         };
+        const std::vector<std::uint64_t> moves = pending_moves();
         for (std::size_t t = 0; t < out.size(); ++t) {
           const std::uint32_t k = id_[t];
-          out[k] = {round(s.x[t], false), round(s.y[t], false), round(s.vx[t], true), round(s.vy[t], true),
-                    round(s.r[k], false)};
+          const Int m = static_cast<Int>(moves[t]);
+          out[k] = {round(Int(s.x[t] + m * s.vx[t]), false), round(Int(s.y[t] + m * s.vy[t]), false),
+                    round(s.vx[t], true), round(s.vy[t], true), round(s.r[k], false)};
         }
       },
       state_);
@@ -640,10 +680,14 @@ spec::Sequence ExactEngine::exact() const {
   spec::Sequence out(size());
   std::visit(
       [&](const auto& s) {
+        using Int = typename std::decay_t<decltype(s.x)>::value_type;
         const spec::Q d(den_), l(den_v_);
+        const std::vector<std::uint64_t> moves = pending_moves();
         for (std::size_t t = 0; t < out.size(); ++t) {
           const std::uint32_t k = id_[t];
-          out[k] = spec::circle(spec::Q(convert<Wide>(s.x[t])) / d, spec::Q(convert<Wide>(s.y[t])) / d,
+          const Int m = static_cast<Int>(moves[t]);
+          out[k] = spec::circle(spec::Q(convert<Wide>(Int(s.x[t] + m * s.vx[t]))) / d,
+                                spec::Q(convert<Wide>(Int(s.y[t] + m * s.vy[t]))) / d,
                                 spec::Q(convert<Wide>(s.vx[t])) / l, spec::Q(convert<Wide>(s.vy[t])) / l,
                                 spec::Q(convert<Wide>(s.r[k])) / d);
         }

@@ -123,10 +123,15 @@ class ExactEngine {
   // state first checks that no new position rounds to ±infinity (PositionOverflow, nothing changed).
   template <class Int>
   void take_velocities(Columns<Int>& s);
-  // With Move, X ← X + V in place for every slot; then the approximations of every slot (every) or of the
-  // slots in a listed pair, and error_bound_ over those.
+  // For every slot (every) or for the slots in a listed pair only (the others' moves wait in pending_): with
+  // Move, X ← X + V in place; then their approximations, and error_bound_ over those.
   template <bool Move, class Int>
   void update(Columns<Int>& s, bool every);
+  // The pending moves of the slots in no listed pair, taken at once: X ← X + pending_·V.
+  template <class Int>
+  void catch_up(Columns<Int>& s);
+  // By slot, the moves not taken yet (pending_ for a slot in no listed pair, else 0).
+  std::vector<std::uint64_t> pending_moves() const;
 
   EngineOptions options_;
   unsigned threads_ = 1;
@@ -155,6 +160,7 @@ class ExactEngine {
   bool fresh_ = false;      // every slot's approximations are up to date
   std::vector<std::uint32_t> listed_;  // the slots in a listed pair, ascending
   double vmax_ = -1;                    // speed_bound of the first world (−1: not yet computed)
+  std::uint64_t pending_ = 0;           // steps whose moves the slots in no listed pair have not taken
   std::vector<std::uint32_t> id_, permutation_, least_, scratch_id_;
   std::vector<std::vector<std::uint32_t>> touched_;
   // The rebuild's radii (inflated by the skin and the centres' errors; padded by the errors alone) and
