@@ -416,6 +416,19 @@ RC_GTEST_PROP(exact_engine, follows_the_oracle_on_rational_worlds_with_any_horiz
   follow(engine, w, *rc::gen::inRange(1, 61));
 }
 
+// Steps the double engine and `engines` side by side; every engine's world() must equal the double engine's
+// after every step.
+void lockstep(Engine& doubles, std::vector<ExactEngine>& engines, int steps) {
+  for (int t = 1; t <= steps; ++t) {
+    doubles.step();
+    const Circles expected = doubles.world().circles();
+    for (ExactEngine& e : engines) {
+      e.step();
+      ASSERT_EQ(e.world().circles(), expected) << "step " << t << ", " << e.threads() << " threads";
+    }
+  }
+}
+
 TEST(exact_engine, every_horizon_and_thread_count_gives_the_same_state_as_the_double_engine_where_moves_are_exact) {
   // 12000 circles at 10% coverage (several chunks on two threads, contacts across chunk boundaries), every
   // move exact in doubles: the double engine is the oracle's trajectory here. Horizons 0 to 64, the
@@ -427,14 +440,7 @@ TEST(exact_engine, every_horizon_and_thread_count_gives_the_same_state_as_the_do
     engines.emplace_back(World(w), EngineOptions{.threads = threads, .keep_pairs = false});
     for (const std::uint64_t h : {0u, 1u, 2u, 3u, 5u, 8u, 17u, 33u, 64u}) engines.emplace_back(World(w), kept(h, threads));
   }
-  for (int t = 1; t <= 16; ++t) {
-    doubles.step();
-    const Circles expected = doubles.world().circles();
-    for (ExactEngine& e : engines) {
-      e.step();
-      ASSERT_EQ(e.world().circles(), expected) << "step " << t << ", " << e.threads() << " threads";
-    }
-  }
+  lockstep(doubles, engines, 16);
   EXPECT_GT(doubles.stats().contacts, 1000u) << "too few contacts to mean anything";
   for (const ExactEngine& e : engines) {
     EXPECT_EQ(e.exact(), engines[0].exact());
@@ -454,14 +460,7 @@ TEST(exact_engine, moves_lonely_circles_late_and_still_equals_the_double_engine_
   std::vector<ExactEngine> engines;
   for (const unsigned threads : {1u, 2u})
     for (const std::uint64_t h : {0u, 7u, 40u}) engines.emplace_back(World(w), kept(h, threads));
-  for (int t = 1; t <= 45; ++t) {
-    doubles.step();
-    const Circles expected = doubles.world().circles();
-    for (ExactEngine& e : engines) {
-      e.step();
-      ASSERT_EQ(e.world().circles(), expected) << "step " << t << ", " << e.threads() << " threads";
-    }
-  }
+  lockstep(doubles, engines, 45);
   EXPECT_GT(doubles.stats().contacts, 10u) << "too few contacts to mean anything";
   for (const ExactEngine& e : engines) EXPECT_EQ(e.exact(), engines[0].exact());
   EXPECT_GT(engines[1].stats().lonely_circle_steps, 45u * 20000 * 3 / 4) << "the circles were not lonely";
