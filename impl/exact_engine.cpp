@@ -310,7 +310,7 @@ ExactEngine::Columns<To> ExactEngine::converted(const Columns<From>& s) {
 
 void ExactEngine::step() {
   if (narrow() && stats_.steps >= proven_until_) {
-    std::visit([this](auto& s) { catch_up(s); }, state_);  // the proof measures every position
+    std::visit([this](auto& s) { update<false>(s, true); }, state_);  // the proof measures every position
     choose_width();
   }
   std::visit([this](auto& s) { step_with(s); }, state_);
@@ -436,7 +436,12 @@ void ExactEngine::update(Columns<Int>& s, bool every) {
   a.x.resize(n);
   a.y.resize(n);
   fresh_ = every;
+  // Without Move, every slot in no listed pair takes its pending moves at once, X ← X + k·V with k = pending_:
+  // the k moves it did not take, all with the velocity it had (a slot in no pair has no contact). |k·V| ≤
+  // k·max |V| fits the width: its proof covers every step since it was made, and this runs before each proof.
+  const Int k = static_cast<Int>(Move ? 0 : pending_);
   if (Move && !every) ++pending_;
+  if (!Move && every) pending_ = 0;
   std::vector<std::array<double, 2>> largest(chunks);  // per chunk: max(|a_x|, |a_y|), the radius error
   for_each_chunk(chunks, threads_, [&](std::size_t c) {
     double reach = 0, radius = 0;
@@ -447,16 +452,24 @@ void ExactEngine::update(Columns<Int>& s, bool every) {
     };
     const std::size_t b = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1);
     if (every) {
+      auto listed = std::lower_bound(listed_.begin(), listed_.end(), b);
       for (std::size_t t = b; t < e; ++t) {
         if constexpr (Move) {
           s.x[t] += s.vx[t];
           s.y[t] += s.vy[t];
+        } else if (k != 0) {
+          if (listed != listed_.end() && *listed == t) {
+            ++listed;
+          } else {
+            s.x[t] += k * s.vx[t];
+            s.y[t] += k * s.vy[t];
+          }
         }
         refresh(t);
       }
     } else {
       // Only the slots in a listed pair move now; the others, whose velocities cannot change before the next
-      // rebuild, take their pending moves there at once (catch_up).
+      // rebuild, take their pending moves there at once (update without Move).
       for (auto t = std::lower_bound(listed_.begin(), listed_.end(), b); t != listed_.end() && *t < e; ++t) {
         if constexpr (Move) {
           s.x[*t] += s.vx[*t];
@@ -476,30 +489,6 @@ void ExactEngine::update(Columns<Int>& s, bool every) {
   }
   const double centre = reach * kBoxRelative + kBoxAbsolute;
   error_bound_ = radii_exact_ ? centre : centre + radius;
-}
-
-template <class Int>
-void ExactEngine::catch_up(Columns<Int>& s) {
-  if (pending_ == 0) return;
-  // X ← X + k·V for the slots in no listed pair, k = pending_: the k moves they did not take, all with the
-  // velocity they had (a slot in no pair has no contact). |k·V| ≤ k·max |V| fits the width: its proof covers
-  // every step since it was made, and catch_up runs before each proof.
-  const Int k = static_cast<Int>(pending_);
-  const std::size_t n = id_.size();
-  const std::size_t chunks = chunk_count(n, threads_);
-  for_each_chunk(chunks, threads_, [&](std::size_t c) {
-    const std::size_t b = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1);
-    auto listed = std::lower_bound(listed_.begin(), listed_.end(), b);
-    for (std::size_t t = b; t < e; ++t) {
-      if (listed != listed_.end() && *listed == t) {
-        ++listed;
-        continue;
-      }
-      s.x[t] += k * s.vx[t];
-      s.y[t] += k * s.vy[t];
-    }
-  });
-  pending_ = 0;
 }
 
 std::vector<std::uint64_t> ExactEngine::pending_moves() const {
@@ -537,8 +526,7 @@ void ExactEngine::rebuild(Columns<Int>& s) {
   // vmax alone (moves are exact), boxes of the radii inflated by it and by the centres' errors, keys, the
   // slots in their cell order, and the broad phase over the inflated radii, each pair it offers listed from
   // its first step.
-  catch_up(s);
-  if (!fresh_) update<false>(s, true);
+  if (!fresh_) update<false>(s, true);  // the pending moves and every slot's approximations
   const std::size_t n = id_.size();
   const std::size_t chunks = chunk_count(n, threads_);
   Approximations& a = approx_;

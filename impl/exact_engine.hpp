@@ -124,12 +124,10 @@ class ExactEngine {
   template <class Int>
   void take_velocities(Columns<Int>& s);
   // For every slot (every) or for the slots in a listed pair only (the others' moves wait in pending_): with
-  // Move, X ← X + V in place; then their approximations, and error_bound_ over those.
+  // Move, X ← X + V in place, without it the pending moves X ← X + pending_·V of every slot that has them;
+  // then their approximations, and error_bound_ over those.
   template <bool Move, class Int>
   void update(Columns<Int>& s, bool every);
-  // The pending moves of the slots in no listed pair, taken at once: X ← X + pending_·V.
-  template <class Int>
-  void catch_up(Columns<Int>& s);
   // By slot, the moves not taken yet (pending_ for a slot in no listed pair, else 0).
   std::vector<std::uint64_t> pending_moves() const;
 

@@ -453,7 +453,7 @@ TEST(exact_engine, every_horizon_and_thread_count_gives_the_same_state_as_the_do
 }
 
 TEST(exact_engine, moves_lonely_circles_late_and_still_equals_the_double_engine_at_every_step) {
-  // 0.1% coverage: most circles are in no listed pair and take their moves at the next rebuild (catch_up),
+  // 0.1% coverage: most circles are in no listed pair and take their moves at the next rebuild (update),
   // while world() and exact() add the pending ones. Every move exact, so the double engine is the oracle.
   const Circles w = exact_move_scene(20000, 0.001);
   Engine doubles(World(w), EngineOptions{.threads = 1});
