@@ -290,7 +290,7 @@ void visit_neighbourhood(const CellGrid& grid, const CellView& view, std::size_t
 }
 
 // A contact that one chunk of slots finds for a slot of a later chunk: slot `to` intersects slot `from`
-// (impl/contacts.hpp offers it after the parallel part).
+// (PairList::least_contacts, impl/pair_list_impl.hpp, offers it after the parallel part).
 struct ContactOffer {
   std::uint32_t to, from;
 };

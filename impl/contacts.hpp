@@ -1,14 +1,16 @@
-// The parts of a step that every engine shares, whatever its numbers: threads, chunks of slots, and each
-// slot's least contact found through the broad phase (impl/broad_phase.hpp).
+// The parts of a step that every engine shares, whatever its numbers: threads, chunks of slots, and the
+// offer of a contact to a slot's least contact so far.
 //
-//   Invariant: find_least_contacts gives every slot t the least slot (under `precedes`, a strict total order)
-//   among the slots that `intersect` t, or t itself when there is none, for every thread count: the least is
-//   a minimum under a strict total order, so the order in which contacts are offered cannot change it.
+//   Invariant: after every contact of a step is offered (offer_least_contact, in any order), least[t] is the
+//   least slot under `precedes` (a strict total order) among the slots that intersect t, or t itself when
+//   there is none: the least is a minimum under a strict total order, so the order of the offers, and with
+//   it the thread count, cannot change it.
 //
 // Include it from .cpp files of circles::impl only: for_each_chunk's pragma needs the library's OpenMP flags.
 //
-// The double engines (impl/engine.cpp) and the exact engine (impl/exact_engine.cpp) differ only in the
-// `intersect` and `precedes` they pass and in the numbers behind the view's boxes.
+// The double engines (impl/engine.cpp) and the exact engine (impl/exact_engine.cpp) find their contacts in a
+// PairList (impl/pair_list.hpp), which offers them here; they differ only in the `intersect` and `precedes`
+// they pass and in the numbers behind the list's boxes.
 #pragma once
 
 #include "impl/broad_phase.hpp"
@@ -54,60 +56,17 @@ void for_each_chunk(std::size_t chunks, unsigned threads, F&& f) {
   for (long c = 0; c < count; ++c) f(static_cast<std::size_t>(c));
 }
 
-// least[t] = the least slot under precedes(a, b) among the slots that intersect(t, ·), or t; the view's slots
-// in cell order, global slots from view.level_begin[kGlobalLevel] on. `offers` is scratch (one list per chunk).
-// Returns 0 exactly when no pair intersects.
-template <class Intersect, class Precedes>
-std::size_t find_least_contacts(const CellGrid& grid, const CellView& view, unsigned threads,
-                                std::vector<std::uint32_t>& least, std::vector<std::vector<ContactOffer>>& offers,
-                                Intersect&& intersect, Precedes&& precedes) {
-  const std::size_t n = view.key.size();
-  least.resize(n);
-  const std::size_t chunks = chunk_count(n, threads);
-  offers.resize(chunks);
-  std::vector<unsigned char> touched(chunks, 0);
-  const auto offer = [&](std::size_t to, std::size_t from) {
-    if (least[to] == to || precedes(from, least[to])) least[to] = static_cast<std::uint32_t>(from);
-  };
-  for_each_chunk(chunks, threads, [&](std::size_t c) {
-    const std::size_t begin = chunk_begin(n, chunks, c), end = chunk_begin(n, chunks, c + 1);
-    offers[c].clear();
-    for (std::size_t t = begin; t < end; ++t) least[t] = static_cast<std::uint32_t>(t);  // no contact yet
-    // A chunk writes the least contact of its own slots only; a contact found for a slot of a later chunk
-    // is recorded and offered after the parallel part.
-    NeighbourCursor cursor;
-    bool any = false;
-    for (std::size_t a = begin; a < end; ++a) {
-      visit_neighbourhood(grid, view, a, cursor, [&](std::size_t b) {
-        if (!intersect(a, b)) return;
-        any = true;
-        offer(a, b);
-        if (b < end)
-          offer(b, a);
-        else
-          offers[c].push_back({static_cast<std::uint32_t>(b), static_cast<std::uint32_t>(a)});
-      });
-    }
-    touched[c] = any;
-  });
-  auto contacts = static_cast<std::size_t>(std::count(touched.begin(), touched.end(), 1));
-  for (const std::vector<ContactOffer>& list : offers) {
-    for (const ContactOffer& o : list) offer(o.to, o.from);
-    contacts += list.size();
+// Slot `to`'s least contact so far after slot `from`, which intersects it, is offered: least[to] == to means
+// none yet. Returns true for the first offer (the caller records `to` as touched), false for a later one,
+// which keeps the lesser under precedes.
+template <class Precedes>
+bool offer_least_contact(std::vector<std::uint32_t>& least, std::size_t to, std::size_t from, Precedes&& precedes) {
+  if (least[to] == to) {
+    least[to] = static_cast<std::uint32_t>(from);
+    return true;
   }
-  // Global circles (a box too wide for every level): tested against every circle, each pair once (a pair of
-  // two global circles from the earlier one).
-  const std::size_t global = view.level_begin[CellGrid::kGlobalLevel];
-  for (std::size_t g = global; g < n; ++g)
-    for (std::size_t b = 0; b < n; ++b) {
-      if (b == g || (b >= global && b < g)) continue;
-      if (intersect(g, b)) {
-        offer(g, b);
-        offer(b, g);
-        ++contacts;
-      }
-    }
-  return contacts;
+  if (precedes(from, least[to])) least[to] = static_cast<std::uint32_t>(from);
+  return false;
 }
 
 }  // namespace circles::impl

@@ -319,14 +319,7 @@ std::vector<CandidatePair> BasicEngine<A>::candidates() const {
     copy.rebuild();
     return copy.candidates();
   }
-  std::vector<CandidatePair> out;
-  pairs_.for_each([&](std::size_t a, std::size_t b) {
-    const std::uint32_t i = now_.id[a], j = now_.id[b];
-    out.push_back(i < j ? CandidatePair{i, j} : CandidatePair{j, i});
-  });
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
-  return out;
+  return listed_pairs(pairs_, now_.id);
 }
 
 template class BasicEngine<ExactArithmetic>;

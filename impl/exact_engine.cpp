@@ -1,17 +1,19 @@
 // The exact engine's step; the invariant is stated in exact_engine.hpp, the design in docs/exact-engine.md.
 //
 // The state: integers X, Y, V_x, V_y by slot (cell order, like the double engine's doubles) and R by circle;
-// beside them, by slot, the broad phase's approximations (centre, radius, box half-width) and keys, and one
-// error bound for every approximation of the step. A step from it:
-//   contacts  impl/contacts.hpp over the boxes, with the filter on approximations and the exact integer test
-//             past it, and the order (7) on the integers;
-//   locate    X ← X + V[least] (a GMP state first takes its new velocities and checks that no position rounds
-//             to ±infinity), then the approximations and keys, block by block;
-//   commit    CellOrder's permutation, then one pass that gathers every slot field (velocities from the least
-//             contacts) and computes the approximations in the new order.
+// beside them, by slot, approximations of the centres and radii with one error bound for the step, and a
+// list of the pairs that can meet before its horizon ends (impl/pair_list.hpp). A step from it:
+//   rebuild   when the list's horizon has ended: the skin (the speed term alone: moves are exact), keys of
+//             the boxes inflated by it and by the centres' errors, CellOrder's permutation and one gather,
+//             then the broad phase fills the list (parallel);
+//   contacts  each listed pair from its first step: the filter on approximations, the integers past it, the
+//             order (7) on the integers; each slot's least contact (parallel);
+//   advance   V ← V[least] for the slots with a contact (a GMP state first checks that no new position
+//             rounds to ±infinity), then X ← X + V in place and the approximations again (parallel).
+// The slots keep their order between rebuilds: a step moves no circle in memory.
 #include "impl/exact_engine.hpp"
 
-#include "impl/contacts.hpp"
+#include "impl/pair_list_impl.hpp"
 #include "impl/detail/exact_int.hpp"
 
 #include <gmp.h>
@@ -32,7 +34,7 @@ using exact::NarrowMagnitude;
 using exact::Wide;
 using exact::Word;
 
-// The boxes (locate): the approximate centre is within 2^-50·|a| + 2^-1075 of the exact one per coordinate
+// The approximations: the approximate centre is within 2^-50·|a| + 2^-1075 of the exact one per coordinate
 // (exact::approximate), so c = RN(RN(max(|ax|, |ay|)·2^-49) + 2^-1073) is at least twice that error (the
 // factor of two covers c's own two roundings, and those of adding a radius error below).
 constexpr double kBoxRelative = 0x1p-49;
@@ -41,8 +43,14 @@ constexpr double kBoxAbsolute = 0x1p-1073;
 // RN(2^-52·ρ + 2^-1074), twice that, so that RN(c + it) still bounds the sum of both errors.
 constexpr double kRadiusRelative = 0x1p-52;
 constexpr double kRadiusAbsolute = 0x1p-1074;
-// locate works in blocks that stay in L1, as the double engine's advance does.
-constexpr std::size_t kBlock = 256;
+// The list's skin (rebuild) is the speed term alone, step_bound(H, vmax, 0, 0) per step (impl/pair_list.hpp):
+// X ← X + V is exact, so a circle moves by |v|/60 exactly. vmax = max norm_upper(v′) over the velocities'
+// approximations v′ (speed_bound), each coordinate within 2^-50·|v′_i| + 2^-1075 of v, so
+// |v| ≤ vmax·(1 + 2^-50)² + 2^-1073: kSpeedBound's margin (1/60)·2^-45 covers the relative part with the
+// five roundings that follow (step_bound's two, skin_for's, the sum with the padding, none in speed_bound):
+// (1 + 2^-50)²·(1 + 2^-53)^5 < 1 + 2^-48; kDriftAbsolute = 2^-1073 covers the absolute part over 60. The
+// radii are padded by exact::kCentreSpread·e for the approximations' errors. Tests at the edge:
+// tests/exact_engine_test.cpp, "Pairs kept across steps".
 constexpr auto kForever = std::numeric_limits<std::uint64_t>::max();
 
 template <class Int>
@@ -198,20 +206,17 @@ void ExactEngine::start(Columns<Int> s, std::vector<double> radius, std::vector<
   radius_ = std::move(radius);
   radius_error_ = std::move(radius_error);
   radii_exact_ = std::all_of(radius_error_.begin(), radius_error_.end(), [](double e) { return e == 0; });
-  // The first layout: slot k holds circle k until commit sorts them.
+  // The first layout: slot k holds circle k until the first step's rebuild sorts them; every slot its own
+  // least contact until a step finds one.
   const std::size_t n = radius_.size();
   id_.resize(n);
   std::iota(id_.begin(), id_.end(), std::uint32_t{0});
+  least_ = id_;
   approx_.rho = radius_;
   key_.clear();
   state_ = std::move(s);
   choose_width();
-  std::visit(
-      [this](auto& columns) {
-        this->locate<false>(columns, false);
-        this->commit(columns, false);
-      },
-      state_);
+  std::visit([this](auto& columns) { this->update<false>(columns, true); }, state_);
 }
 
 unsigned ExactEngine::width() const noexcept {
@@ -262,9 +267,9 @@ void ExactEngine::choose_width() {
   const auto ahead = [&](int bits) -> std::uint64_t {
     const Wide limit = Wide(1) << bits;
     if (den_ > limit || radius > limit || speed > limit || reach > limit) return 0;
-    if (speed == 0) return kForever - steps_;
+    if (speed == 0) return kForever - stats_.steps;
     const Wide steps = (limit - reach) / speed;
-    return steps >= Wide(kForever - steps_) ? kForever - steps_ : steps.convert_to<std::uint64_t>();
+    return steps >= Wide(kForever - stats_.steps) ? kForever - stats_.steps : steps.convert_to<std::uint64_t>();
   };
   const auto to = [this](auto width) {
     using Int = decltype(width);
@@ -277,10 +282,10 @@ void ExactEngine::choose_width() {
   };
   if (const std::uint64_t word = ahead(exact::kWordBits); word > 0) {
     to(Word{});
-    proven_until_ = steps_ + word;
+    proven_until_ = stats_.steps + word;
   } else if (const std::uint64_t narrow = ahead(exact::kNarrowBits); narrow > 0) {
     to(Narrow{});
-    proven_until_ = steps_ + narrow;
+    proven_until_ = stats_.steps + narrow;
   } else {
     to(Wide{});
     return;
@@ -288,6 +293,7 @@ void ExactEngine::choose_width() {
   narrow_den_ = static_cast<NarrowMagnitude>(narrow_of(den_));
   narrow_den_v_ = static_cast<NarrowMagnitude>(narrow_of(den_v_));
   inverse_den_ = exact::round_quotient(Narrow{1}, narrow_den_);
+  inverse_den_v_ = exact::round_quotient(Narrow{1}, narrow_den_v_);
 }
 
 template <class To, class From>
@@ -303,9 +309,11 @@ ExactEngine::Columns<To> ExactEngine::converted(const Columns<From>& s) {
 }
 
 void ExactEngine::step() {
-  if (narrow() && steps_ >= proven_until_) choose_width();
+  if (narrow() && stats_.steps >= proven_until_) {
+    std::visit([this](auto& s) { update<false>(s, true); }, state_);  // the proof measures every position
+    choose_width();
+  }
   std::visit([this](auto& s) { step_with(s); }, state_);
-  ++steps_;
 }
 
 template <class Int>
@@ -321,15 +329,14 @@ bool ExactEngine::precedes(const Columns<Int>& s, std::size_t a, std::size_t b) 
   return i < j;
 }
 
-// The centre's error bound (kBoxRelative) plus the radius's.
-inline double ExactEngine::error(double x, double y, std::uint32_t circle) const noexcept {
-  const double centre = std::max(std::fabs(x), std::fabs(y)) * kBoxRelative + kBoxAbsolute;
+// The centre's error bound (kBoxRelative) for a largest coordinate m, plus the radius's.
+inline double ExactEngine::error(double m, std::uint32_t circle) const noexcept {
+  const double centre = m * kBoxRelative + kBoxAbsolute;
   return radii_exact_ ? centre : centre + radius_error_[circle];
 }
 
 template <class Int>
-inline double ExactEngine::approximate(const Int& x, const Int& y, double rho, std::uint32_t circle, double& ax,
-                                       double& ay, double& box) const noexcept {
+inline void ExactEngine::approximate(const Int& x, const Int& y, double& ax, double& ay) const noexcept {
   if constexpr (kFixed<Int>) {
     ax = exact::approximate(x, inverse_den_);
     ay = exact::approximate(y, inverse_den_);
@@ -337,11 +344,6 @@ inline double ExactEngine::approximate(const Int& x, const Int& y, double rho, s
     ax = exact::approximate(x, den_);
     ay = exact::approximate(y, den_);
   }
-  // ρ ± error holds r and (ax, ay) ± error the centre, so the box of half-width ≥ ρ + error around (ax, ay)
-  // holds the exact box (+infinity: a global circle).
-  const double e = error(ax, ay, circle);
-  box = outward_upper(rho, e);
-  return e;
 }
 
 template <class Int>
@@ -352,173 +354,291 @@ bool ExactEngine::intersect_exactly(const Columns<Int>& s, std::size_t i, std::s
 
 template <class Int>
 void ExactEngine::step_with(Columns<Int>& s) {
-  const Approximations& a = approx_;
-  const CellView view{key_, a.x, a.y, a.box, levels_, level_begin_};
-  find_least_contacts(
-      grid_, view, threads_, least_, offers_,
-      [&](std::size_t i, std::size_t j) {
-        const double e = error_bound_;
-        const Decision d = exact::intersect_approximate(a.x[i], a.y[i], a.rho[i], e, a.x[j], a.y[j], a.rho[j], e);
-        if (d != Decision::undecided) [[likely]]
-          return d == Decision::intersect;
-        return intersect_exactly(s, i, j);
-      },
-      [&](std::size_t i, std::size_t j) { return precedes(s, i, j); });
-  if constexpr (kFixed<Int>) {
-    // A fixed-width state cannot overflow (check_overflow): V[least] is read where it is used, X ← X + V in
-    // locate and the velocities' gather in commit.
-    locate<true>(s, true);
-    commit(s, true);
+  if (stats_.steps == rebuild_at_) rebuild(s);
+  std::size_t contacts = 0, tested = 0;
+  const std::uint64_t j = stats_.steps - built_at_;  // this step's place in the list's horizon
+  if (!pairs_.quiet(j)) {
+    const Approximations& a = approx_;
+    const double e = error_bound_;
+    contacts = pairs_.least_contacts(
+        j, threads_, least_, touched_, tested,
+        [&](std::size_t i, std::size_t k) {
+          const Decision d = exact::intersect_approximate(a.x[i], a.y[i], a.rho[i], e, a.x[k], a.y[k], a.rho[k], e);
+          if (d != Decision::undecided) [[likely]]
+            return d == Decision::intersect;
+          return intersect_exactly(s, i, k);
+        },
+        [&](std::size_t i, std::size_t k) { return precedes(s, i, k); });
   } else {
-    // A GMP state takes its new velocities first and checks every new position before anything changes.
-    const std::size_t n = id_.size();
-    s.next_vx.resize(n);
-    s.next_vy.resize(n);
+    ++stats_.quiet_steps;
+    for (std::vector<std::uint32_t>& list : touched_) list.clear();
+  }
+  take_velocities(s);
+  // Where most slots are in no listed pair, only the listed ones move and get their approximations now; the
+  // rest catch up at the next rebuild. A GMP state moves every slot: its overflow check reads them all.
+  update<true>(s, !kFixed<Int> || pairs_.lonely() * 4 < id_.size());
+  ++stats_.steps;
+  stats_.pairs_tested += tested;
+  stats_.contacts += contacts;
+  stats_.lonely_circle_steps += pairs_.lonely();
+}
+
+template <class Int>
+void ExactEngine::take_velocities(Columns<Int>& s) {
+  const std::size_t n = id_.size();
+  const std::size_t chunks = chunk_count(n, threads_);
+  touched_.resize(chunks);
+  const auto untouch = [this] {
+    for (const std::vector<std::uint32_t>& list : touched_)
+      for (const std::uint32_t t : list) least_[t] = t;
+  };
+  if constexpr (!kFixed<Int>) {
+    // Only a GMP state can reach the double range's end (a fixed-width |X| ≤ 2^125 with D ≥ 60 is below
+    // 2^125): every new position X + V[least] is checked before anything changes (least_[t] == t for a slot
+    // without contact). The lowest circle, px before py, is reported.
+    constexpr std::uint64_t kNone = std::numeric_limits<std::uint64_t>::max();
+    std::uint64_t first = kNone;  // 2·circle + (0 for px, 1 for py)
+    Wide next;
     for (std::size_t t = 0; t < n; ++t) {
+      next = s.x[t] + s.vx[least_[t]];
+      if (mpz_cmpabs(raw(next), raw(overflow_at_)) >= 0) first = std::min(first, 2 * std::uint64_t{id_[t]});
+      next = s.y[t] + s.vy[least_[t]];
+      if (mpz_cmpabs(raw(next), raw(overflow_at_)) >= 0) first = std::min(first, 2 * std::uint64_t{id_[t]} + 1);
+    }
+    if (first != kNone) {
+      untouch();
+      throw PositionOverflow(stats_.steps + 1, first / 2, first % 2 ? "py" : "px");
+    }
+  }
+  // Every new velocity first, read from world t (a slot's least contact may be touched too), then written.
+  s.next_vx.resize(n);
+  s.next_vy.resize(n);
+  for_each_chunk(chunks, threads_, [&](std::size_t c) {
+    for (const std::uint32_t t : touched_[c]) {
       s.next_vx[t] = s.vx[least_[t]];
       s.next_vy[t] = s.vy[least_[t]];
     }
-    check_overflow(s);
-    s.vx.swap(s.next_vx);
-    s.vy.swap(s.next_vy);
-    locate<true>(s, false);
-    commit(s, false);
+  });
+  for_each_chunk(chunks, threads_, [&](std::size_t c) {
+    for (const std::uint32_t t : touched_[c]) {
+      std::swap(s.vx[t], s.next_vx[t]);
+      std::swap(s.vy[t], s.next_vy[t]);
+      least_[t] = t;
+    }
+  });
+}
+
+template <bool Move, class Int>
+void ExactEngine::update(Columns<Int>& s, bool every) {
+  const std::size_t n = id_.size();
+  const std::size_t chunks = chunk_count(n, threads_);
+  Approximations& a = approx_;
+  a.x.resize(n);
+  a.y.resize(n);
+  fresh_ = every;
+  // Without Move, every slot in no listed pair takes its pending moves at once, X ← X + k·V with k = pending_:
+  // the k moves it did not take, all with the velocity it had (a slot in no pair has no contact). |k·V| ≤
+  // k·max |V| fits the width: its proof covers every step since it was made, and this runs before each proof.
+  const Int k = static_cast<Int>(Move ? 0 : pending_);
+  if (Move && !every) ++pending_;
+  if (!Move && every) pending_ = 0;
+  std::vector<std::array<double, 2>> largest(chunks);  // per chunk: max(|a_x|, |a_y|), the radius error
+  for_each_chunk(chunks, threads_, [&](std::size_t c) {
+    double reach = 0, radius = 0;
+    const auto refresh = [&](std::size_t t) {
+      approximate(s.x[t], s.y[t], a.x[t], a.y[t]);
+      reach = std::max({reach, std::fabs(a.x[t]), std::fabs(a.y[t])});
+      if (!radii_exact_) radius = std::max(radius, radius_error_[id_[t]]);
+    };
+    const std::size_t b = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1);
+    if (every) {
+      auto listed = std::lower_bound(listed_.begin(), listed_.end(), b);
+      for (std::size_t t = b; t < e; ++t) {
+        if constexpr (Move) {
+          s.x[t] += s.vx[t];
+          s.y[t] += s.vy[t];
+        } else if (k != 0) {
+          if (listed != listed_.end() && *listed == t) {
+            ++listed;
+          } else {
+            s.x[t] += k * s.vx[t];
+            s.y[t] += k * s.vy[t];
+          }
+        }
+        refresh(t);
+      }
+    } else {
+      // Only the slots in a listed pair move now; the others, whose velocities cannot change before the next
+      // rebuild, take their pending moves there at once (update without Move).
+      for (auto t = std::lower_bound(listed_.begin(), listed_.end(), b); t != listed_.end() && *t < e; ++t) {
+        if constexpr (Move) {
+          s.x[*t] += s.vx[*t];
+          s.y[*t] += s.vy[*t];
+        }
+        refresh(*t);
+      }
+    }
+    largest[c] = {reach, radius};
+  });
+  // error(m, ·) is RN of sums and products of non-negative terms, monotone in m and in the radius error, so
+  // that of the largest of each is at least every slot's.
+  double reach = 0, radius = 0;
+  for (const auto& [m, r] : largest) {
+    reach = std::max(reach, m);
+    radius = std::max(radius, r);
   }
+  const double centre = reach * kBoxRelative + kBoxAbsolute;
+  error_bound_ = radii_exact_ ? centre : centre + radius;
+}
+
+std::vector<std::uint64_t> ExactEngine::pending_moves() const {
+  std::vector<std::uint64_t> moves(id_.size(), pending_);
+  if (pending_ > 0)
+    for (const std::uint32_t t : listed_) moves[t] = 0;
+  return moves;
 }
 
 template <class Int>
-void ExactEngine::check_overflow(const Columns<Int>& s) const {
-  // Only a GMP state can reach the double range's end: a fixed-width |X| ≤ 2^125 with D ≥ 60 is below 2^125.
-  if constexpr (!kFixed<Int>) {
-    constexpr std::uint64_t kNone = std::numeric_limits<std::uint64_t>::max();
-    std::uint64_t first = kNone;  // 2·circle + (0 for px, 1 for py): the lowest circle, px before py
-    Wide next;
-    for (std::size_t t = 0; t < s.x.size(); ++t) {
-      next = s.x[t] + s.next_vx[t];
-      if (mpz_cmpabs(raw(next), raw(overflow_at_)) >= 0) first = std::min(first, 2 * std::uint64_t{id_[t]});
-      next = s.y[t] + s.next_vy[t];
-      if (mpz_cmpabs(raw(next), raw(overflow_at_)) >= 0) first = std::min(first, 2 * std::uint64_t{id_[t]} + 1);
+double ExactEngine::speed_bound(const Columns<Int>& s) const {
+  // For approximations v′ within 2^-50·|v′_i| + 2^-1075 of v per coordinate (exact::approximate),
+  // |v| ≤ |v′|·(1 + 2^-50) + √2·2^-1075 ≤ norm_upper(v′)·(1 + 2^-50)² + 2^-1073: kSpeedBound's margin and
+  // kDriftAbsolute cover both terms (the skin's derivation at the top of this file).
+  const std::size_t n = id_.size();
+  const std::size_t chunks = chunk_count(n, threads_);
+  std::vector<double> largest(chunks, 0.0);
+  for_each_chunk(chunks, threads_, [&](std::size_t c) {
+    double vmax = 0;
+    for (std::size_t t = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1); t < e; ++t) {
+      if constexpr (kFixed<Int>)
+        vmax = std::max(vmax, norm_upper(exact::approximate(s.vx[t], inverse_den_v_),
+                                         exact::approximate(s.vy[t], inverse_den_v_)));
+      else
+        vmax = std::max(vmax, norm_upper(exact::approximate(s.vx[t], den_v_), exact::approximate(s.vy[t], den_v_)));
     }
-    if (first != kNone) throw PositionOverflow(steps_ + 1, first / 2, first % 2 ? "py" : "px");
-  }
+    largest[c] = vmax;
+  });
+  return *std::max_element(largest.begin(), largest.end());
 }
 
-template <bool Advance, class Int>
-void ExactEngine::locate(Columns<Int>& s, bool from_least) {
+template <class Int>
+void ExactEngine::rebuild(Columns<Int>& s) {
+  // A list for world t and the horizon H (docs/exact-engine.md, "Pairs kept across steps"): the skin from
+  // vmax alone (moves are exact), boxes of the radii inflated by it and by the centres' errors, keys, the
+  // slots in their cell order, and the broad phase over the inflated radii, each pair it offers listed from
+  // its first step.
+  if (!fresh_) update<false>(s, true);  // the pending moves and every slot's approximations
   const std::size_t n = id_.size();
-  next_key_.resize(n);
   const std::size_t chunks = chunk_count(n, threads_);
+  Approximations& a = approx_;
+  // Velocities are only copied: the first world's bound holds for every later one.
+  if (!(vmax_ >= 0)) vmax_ = speed_bound(s);
+  const double vmax = vmax_;
+  std::uint64_t horizon = !options_.keep_pairs ? 0 : options_.horizon > 0 ? options_.horizon : schedule_.horizon();
+  double step = step_bound(horizon, vmax, 0, 0);
+  double skin = skin_for(horizon, vmax, 0, 0);
+  if (!(skin < kInfinity)) {
+    // Motion too fast to bound in doubles: a list for this world alone.
+    horizon = 0;
+    step = 0;
+    skin = 0;
+    schedule_.collapse();
+  }
+  // ρ + kCentreSpread·e ≥ ρ + (1 + √2)·e ≥ r + |c − p|: the circle's disc around its approximate centre
+  // holds the exact one; with the skin added, it holds every position of the horizon.
+  const auto padding = [&](std::size_t t) {
+    return error(std::max(std::fabs(a.x[t]), std::fabs(a.y[t])), id_[t]) * exact::kCentreSpread;
+  };
+  inflated_.resize(n);
+  for (std::size_t t = 0; t < n; ++t) inflated_[t] = outward_upper(a.rho[t], padding(t) + skin);
+  if (horizon != planned_horizon_) {
+    grid_.plan(a.x, a.y, inflated_);
+    planned_horizon_ = horizon;
+  }
+  next_key_.resize(n);
   std::vector<std::array<double, 4>> extent(chunks);
-  for_each_chunk(chunks, threads_, [&](std::size_t c) {
-    constexpr double inf = std::numeric_limits<double>::infinity();
-    double xlo = inf, xhi = -inf, ylo = inf, yhi = -inf;
-    // The keys need the approximations; commit computes them again in the new order rather than moving them.
-    std::array<double, kBlock> bx, by, bbox;
-    for (std::size_t b = chunk_begin(n, chunks, c), end = chunk_begin(n, chunks, c + 1); b < end; b += kBlock) {
-      const std::size_t e = std::min(end, b + kBlock);
-      for (std::size_t t = b; t < e; ++t) {
-        if constexpr (Advance) {
-          const std::size_t from = from_least ? least_[t] : t;
-          s.x[t] += s.vx[from];
-          s.y[t] += s.vy[from];
-        }
-        approximate(s.x[t], s.y[t], approx_.rho[t], id_[t], bx[t - b], by[t - b], bbox[t - b]);
-        xlo = std::min(xlo, bx[t - b]);
-        xhi = std::max(xhi, bx[t - b]);
-        ylo = std::min(ylo, by[t - b]);
-        yhi = std::max(yhi, by[t - b]);
-      }
-      grid_.keys(std::span<const double>(bx.data(), e - b), std::span<const double>(by.data(), e - b),
-                 std::span<const double>(bbox.data(), e - b), std::span<CellKey>(next_key_).subspan(b, e - b));
-    }
-    extent[c] = {xlo, xhi, ylo, yhi};
-  });
-  // Circles drifted out of the planned grid (their cells clamp, which is correct but slow): plan again, from
-  // every slot's approximations.
-  bool inside = planned_;
-  for (const auto& [xlo, xhi, ylo, yhi] : extent) inside = inside && (xlo > xhi || grid_.covers(xlo, xhi, ylo, yhi));
-  if (!inside) {
-    Approximations& a = approx_;
-    for (std::vector<double>* field : {&a.x, &a.y, &a.box}) field->resize(n);
-    for (std::size_t t = 0; t < n; ++t) approximate(s.x[t], s.y[t], a.rho[t], id_[t], a.x[t], a.y[t], a.box[t]);
-    grid_.plan(a.x, a.y, a.box);
-    planned_ = true;
+  const auto keys = [&] {
     for_each_chunk(chunks, threads_, [&](std::size_t c) {
       const std::size_t b = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1);
       grid_.keys(std::span<const double>(a.x).subspan(b, e - b), std::span<const double>(a.y).subspan(b, e - b),
-                 std::span<const double>(a.box).subspan(b, e - b), std::span<CellKey>(next_key_).subspan(b, e - b));
-    });
-  }
-}
-
-template <class Int>
-void ExactEngine::commit(Columns<Int>& s, bool from_least) {
-  // The new order, then one parallel pass: per chunk, every slot field gathered into the new order (the
-  // velocities from each slot's least contact when from_least), and the approximations there with their
-  // largest error bound. Keys sorted already: the same in place.
-  const std::size_t n = id_.size();
-  const std::size_t chunks = chunk_count(n, threads_);
-  const bool sorted = order_.sort(next_key_, key_, permutation_);
-  Approximations& a = approx_;
-  for (std::vector<double>* field : {&a.x, &a.y, &a.box}) field->resize(n);
-  if (sorted) {
-    key_.swap(next_key_);
-  } else {
-    for (std::vector<Int>* field : {&s.next_x, &s.next_y}) field->resize(n);
-    next_rho_.resize(n);
-    next_id_.resize(n);
-    key_.resize(n);
-  }
-  if (!sorted || from_least) {
-    s.next_vx.resize(n);
-    s.next_vy.resize(n);
-  }
-  // Where each field of the new order is once the pass is done.
-  const std::vector<Int>& x = sorted ? s.x : s.next_x;
-  const std::vector<Int>& y = sorted ? s.y : s.next_y;
-  const std::vector<double>& rho = sorted ? a.rho : next_rho_;
-  const std::vector<std::uint32_t>& id = sorted ? id_ : next_id_;
-  std::vector<double> largest(chunks, 0.0);
-  for_each_chunk(chunks, threads_, [&](std::size_t c) {
-    const std::size_t b = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1);
-    if (sorted && from_least) {
+                 std::span<const double>(inflated_).subspan(b, e - b), std::span<CellKey>(next_key_).subspan(b, e - b));
+      double xlo = kInfinity, xhi = -kInfinity, ylo = kInfinity, yhi = -kInfinity;
       for (std::size_t t = b; t < e; ++t) {
-        s.next_vx[t] = s.vx[least_[t]];
-        s.next_vy[t] = s.vy[least_[t]];
+        xlo = std::min(xlo, a.x[t]);
+        xhi = std::max(xhi, a.x[t]);
+        ylo = std::min(ylo, a.y[t]);
+        yhi = std::max(yhi, a.y[t]);
       }
-    } else if (!sorted) {
-      gather(s.next_x, s.x, permutation_, b, e);
-      gather(s.next_y, s.y, permutation_, b, e);
-      if (from_least) {  // fixed widths only: copies, and least_ is no permutation
-        for (std::size_t t = b; t < e; ++t) {
-          s.next_vx[t] = s.vx[least_[permutation_[t]]];
-          s.next_vy[t] = s.vy[least_[permutation_[t]]];
-        }
-      } else {
-        gather(s.next_vx, s.vx, permutation_, b, e);
-        gather(s.next_vy, s.vy, permutation_, b, e);
-      }
-      gather(next_rho_, a.rho, permutation_, b, e);
-      gather(next_id_, id_, permutation_, b, e);
-      gather(key_, next_key_, permutation_, b, e);
-    }
-    double bound = 0;
-    for (std::size_t t = b; t < e; ++t)
-      bound = std::max(bound, approximate(x[t], y[t], rho[t], id[t], a.x[t], a.y[t], a.box[t]));
-    largest[c] = bound;
-  });
-  error_bound_ = *std::max_element(largest.begin(), largest.end());
-  if (!sorted) {
-    s.x.swap(s.next_x);
-    s.y.swap(s.next_y);
-    a.rho.swap(next_rho_);
-    id_.swap(next_id_);
+      extent[c] = {xlo, xhi, ylo, yhi};
+    });
+  };
+  keys();
+  // Circles drifted out of the planned grid (their cells clamp, which is correct but slow): plan again.
+  bool inside = true;
+  for (const auto& [xlo, xhi, ylo, yhi] : extent) inside = inside && (xlo > xhi || grid_.covers(xlo, xhi, ylo, yhi));
+  if (!inside) {
+    grid_.plan(a.x, a.y, inflated_);
+    keys();
   }
-  if (!sorted || from_least) {
-    s.vx.swap(s.next_vx);
-    s.vy.swap(s.next_vy);
+  if (key_.size() != n) key_.clear();  // the first layout: no previous order to guide the sort
+  const bool sorted = order_.sort(next_key_, key_, permutation_);
+  std::swap(key_, next_key_);
+  if (!sorted) {
+    // One gather of every slot field into cell order. least_ is the identity between steps, so it stays.
+    for (std::vector<Int>* field : {&s.x, &s.y, &s.vx, &s.vy}) {
+      s.next_vx.resize(n);
+      for_each_chunk(chunks, threads_, [&](std::size_t c) {
+        gather(s.next_vx, *field, permutation_, chunk_begin(n, chunks, c), chunk_begin(n, chunks, c + 1));
+      });
+      field->swap(s.next_vx);
+    }
+    scratch_.resize(n);
+    for (std::vector<double>* field : {&a.x, &a.y, &a.rho, &inflated_}) {
+      for_each_chunk(chunks, threads_, [&](std::size_t c) {
+        gather(scratch_, *field, permutation_, chunk_begin(n, chunks, c), chunk_begin(n, chunks, c + 1));
+      });
+      field->swap(scratch_);
+    }
+    scratch_id_.resize(n);
+    next_key_.resize(n);
+    for_each_chunk(chunks, threads_, [&](std::size_t c) {
+      const std::size_t b = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1);
+      gather(scratch_id_, id_, permutation_, b, e);
+      gather(next_key_, key_, permutation_, b, e);
+    });
+    std::swap(id_, scratch_id_);
+    std::swap(key_, next_key_);
   }
   index_levels(key_, level_begin_, levels_);
+  const CellView view{key_, a.x, a.y, inflated_, levels_, level_begin_};
+  padded_.resize(n);
+  for (std::size_t t = 0; t < n; ++t) padded_[t] = outward_upper(a.rho[t], padding(t));
+  // A pair disjoint at the inflated radii cannot meet within the horizon; one that intersects at the padded
+  // radii may meet now; the rest from their gap (first_step), the padded radii bounding the exact gap below.
+  const double *px = a.x.data(), *py = a.y.data(), *r = padded_.data(), *ri = inflated_.data();
+  pairs_.build(grid_, view, threads_, horizon, [px, py, r, ri, step, horizon](std::size_t i, std::size_t k) {
+    if (intersect_filter(px[i], py[i], ri[i], px[k], py[k], ri[k]) == Decision::disjoint) return kNever;
+    if (intersect_filter(px[i], py[i], r[i], px[k], py[k], r[k]) == Decision::intersect) return std::uint32_t{0};
+    return first_step(px[i], py[i], r[i], px[k], py[k], r[k], step, horizon);
+  });
+  std::vector<unsigned char> in_pair(n, 0);
+  pairs_.for_each([&in_pair](std::size_t i, std::size_t k) { in_pair[i] = in_pair[k] = 1; });
+  listed_.clear();
+  for (std::size_t t = 0; t < n; ++t)
+    if (in_pair[t]) listed_.push_back(static_cast<std::uint32_t>(t));
+  built_at_ = stats_.steps;
+  stats_.pairs_listed += pairs_.size();
+  ++stats_.rebuilds;
+  if (options_.keep_pairs && options_.horizon == 0) schedule_.update(pairs_.tests(), n);
+  rebuild_at_ = stats_.steps + horizon + 1;
+}
+
+std::vector<CandidatePair> ExactEngine::candidates() const {
+  if (stats_.steps == rebuild_at_) {
+    ExactEngine copy = *this;
+    std::visit([&copy](auto& s) { copy.rebuild(s); }, copy.state_);
+    return copy.candidates();
+  }
+  return listed_pairs(pairs_, id_);
 }
 
 World ExactEngine::world() const {
@@ -532,10 +652,12 @@ World ExactEngine::world() const {
           else
             return exact::round_quotient(x, velocity ? den_v_ : den_);
         };
+        const std::vector<std::uint64_t> moves = pending_moves();
         for (std::size_t t = 0; t < out.size(); ++t) {
           const std::uint32_t k = id_[t];
-          out[k] = {round(s.x[t], false), round(s.y[t], false), round(s.vx[t], true), round(s.vy[t], true),
-                    round(s.r[k], false)};
+          const Int m = static_cast<Int>(moves[t]);
+          out[k] = {round(Int(s.x[t] + m * s.vx[t]), false), round(Int(s.y[t] + m * s.vy[t]), false),
+                    round(s.vx[t], true), round(s.vy[t], true), round(s.r[k], false)};
         }
       },
       state_);
@@ -546,10 +668,14 @@ spec::Sequence ExactEngine::exact() const {
   spec::Sequence out(size());
   std::visit(
       [&](const auto& s) {
+        using Int = typename std::decay_t<decltype(s.x)>::value_type;
         const spec::Q d(den_), l(den_v_);
+        const std::vector<std::uint64_t> moves = pending_moves();
         for (std::size_t t = 0; t < out.size(); ++t) {
           const std::uint32_t k = id_[t];
-          out[k] = spec::circle(spec::Q(convert<Wide>(s.x[t])) / d, spec::Q(convert<Wide>(s.y[t])) / d,
+          const Int m = static_cast<Int>(moves[t]);
+          out[k] = spec::circle(spec::Q(convert<Wide>(Int(s.x[t] + m * s.vx[t]))) / d,
+                                spec::Q(convert<Wide>(Int(s.y[t] + m * s.vy[t]))) / d,
                                 spec::Q(convert<Wide>(s.vx[t])) / l, spec::Q(convert<Wide>(s.vy[t])) / l,
                                 spec::Q(convert<Wide>(s.r[k])) / d);
         }

@@ -7,17 +7,19 @@
 // Velocities are only ever copied (h of (9)), so every position is p0 + (a sum of input velocities)/60. With
 // L the least common multiple of the inputs' denominators (2^K for doubles, K fixed by the scene's least
 // exponent) and D = 60·L, the engine holds X = D·p, V = L·v and R = D·r, all integers; a step is X ← X + V of
-// the least contact. Intersect (3) is R_a + R_b ≥ |X_b − X_a| in integers, after a filter on the broad phase's
-// double approximations that decides all but near-tangent pairs; the order of (7) compares the integers (D,
-// L > 0 keep the order). The width is chosen per scene and re-proven ahead for a number of steps (from max |V|):
+// the least contact. Intersect (3) is R_a + R_b ≥ |X_b − X_a| in integers, after a filter on double
+// approximations that decides all but near-tangent pairs; the order of (7) compares the integers (D, L > 0
+// keep the order). The width is chosen per scene and re-proven ahead for a number of steps (from max |V|):
 // 64 bits while every magnitude stays within 2^61, __int128 within 2^125, GMP integers otherwise. Like the
-// double engine, the circles are kept in cell order (slots), with the same broad phase and threads.
-// docs/exact-engine.md has the representation, the bounds, the rounding and the broad phase's boxes.
+// double engine, the circles are kept in cell order (slots) and the pairs that can meet are kept across
+// steps in a PairList (impl/pair_list.hpp) with a proven skin, the speed term alone: moves are exact.
+// docs/exact-engine.md has the representation, the bounds, the rounding, the boxes and the skin.
 #pragma once
 
 #include "impl/broad_phase.hpp"
 #include "impl/engine.hpp"
 #include "impl/exact_integer.hpp"
+#include "impl/pair_list.hpp"
 #include "spec/oracle.hpp"
 
 #include <array>
@@ -50,7 +52,9 @@ class ExactEngine {
   // The exact state as strings "num/den" in lowest terms ("n" for integers), [px, py, vx, vy, r] per circle.
   std::vector<std::array<std::string, 5>> rationals() const;
 
-  std::uint64_t steps() const noexcept { return steps_; }
+  std::uint64_t steps() const noexcept { return stats_.steps; }
+  // What the steps did and skipped, as the double engine counts it (impl/pair_list.hpp).
+  const EngineStats& stats() const noexcept { return stats_; }
   unsigned threads() const noexcept { return threads_; }
   std::size_t size() const noexcept { return radius_.size(); }
   // The integers' width: 64 or 128 (fixed, proven to hold the state until the next proof), 0 for GMP.
@@ -61,35 +65,40 @@ class ExactEngine {
   // D = 60·L, the common denominator of positions and radii (velocities have L).
   const exact::Wide& denominator() const noexcept { return den_; }
 
+  // For the debug validator and tests: the pairs {i, j}, i < j (circle indices), that the next step's pair
+  // test would consider, once each (the list it keeps, or the one it would build). O(n + pairs).
+  std::vector<CandidatePair> candidates() const;
+
   static constexpr unsigned kMaxThreads = BasicEngine<ExactArithmetic>::kMaxThreads;
 
  private:
   // The integers of the state. Positions and velocities by slot (cell order, slot t holds circle id_[t]), as
   // the double engine keeps its doubles; radii never change and are read only by exact decisions and ties of
-  // the order, so they stay by circle index. The next_ arrays are a step's scratch: the new velocities, then
-  // the gather's targets.
+  // the order, so they stay by circle index. next_vx and next_vy are scratch: the new velocities of the
+  // slots a step touches, and the rebuild's gather target.
   template <class Int>
   struct Columns {
-    std::vector<Int> x, y, vx, vy, r, next_x, next_y, next_vx, next_vy;
+    std::vector<Int> x, y, vx, vy, r, next_vx, next_vy;
   };
-  // By slot, the broad phase's doubles: circle id_[t]'s centre is within e of (x[t], y[t]) on each axis and
-  // its radius within e of rho[t], for e = error(x[t], y[t], id_[t]) ≤ error_bound_; box[t] ≥ rho[t] + e is
-  // the half-width of a box that holds the exact one.
+  // By slot, doubles near the exact state: circle id_[t]'s centre is within e of (x[t], y[t]) on each axis
+  // and its radius within e of rho[t], for e = error(max(|x[t]|, |y[t]|), id_[t]). The pair test's filter
+  // reads them every step, with error_bound_ ≥ every e; the rebuild's boxes and gaps too. Between rebuilds
+  // only the slots in a listed pair may be kept up to date (fresh_ false; the rebuild refreshes the rest).
   struct Approximations {
-    std::vector<double> x, y, rho, box;
+    std::vector<double> x, y, rho;
   };
-  // A bound on the errors of the approximations (x, y) and ρ of `circle`.
-  double error(double x, double y, std::uint32_t circle) const noexcept;
-  // The approximations of one circle from its integers (exact::approximate) and ρ; returns their error bound.
+  // A bound on the errors of the approximations (x, y) and ρ of `circle`, for m = max(|x|, |y|).
+  double error(double m, std::uint32_t circle) const noexcept;
+  // The approximations of one circle's centre from its integers (exact::approximate).
   template <class Int>
-  double approximate(const Int& x, const Int& y, double rho, std::uint32_t circle, double& ax, double& ay,
-                     double& box) const noexcept;
+  void approximate(const Int& x, const Int& y, double& ax, double& ay) const noexcept;
   // The same integers in another width (each value must fit).
   template <class To, class From>
   static Columns<To> converted(const Columns<From>& s);
 
   // The constructors' work: from rationals, the denominators, the scaled integers in GMP and the radii's
-  // doubles; then start with the state by circle index (slot k holds circle k), the width and the layout.
+  // doubles; then start with the state by circle index (slot k holds circle k), the width and the
+  // approximations (the first step's rebuild sorts the slots).
   void from_rationals(const spec::Sequence& circles);
   template <class Int>
   void start(Columns<Int> s, std::vector<double> radius, std::vector<double> radius_error);
@@ -100,47 +109,64 @@ class ExactEngine {
   template <class Int>
   bool precedes(const Columns<Int>& s, std::size_t a, std::size_t b) const noexcept;
   // Intersect (3) of slots i and j on the integers, for the pairs the filter leaves; out of line, so that the
-  // filter inlines into the broad phase's loop.
+  // filter inlines into the pair loop.
   template <class Int>
   [[gnu::noinline]] bool intersect_exactly(const Columns<Int>& s, std::size_t i, std::size_t j) const;
+  // A double ≥ max |v| over the circles (from the velocities' approximations, norm_upper).
   template <class Int>
-  void check_overflow(const Columns<Int>& s) const;
-  // The keys of every slot (next_key_) from its approximations, and a new grid when circles left it. With
-  // Advance, first each slot's move X ← X + V, with V the velocity of the slot's least contact when
-  // from_least (else its own: the velocities are new already).
-  template <bool Advance, class Int>
-  void locate(Columns<Int>& s, bool from_least);
-  // The slots in cell order again (their velocities taken from their least contacts when from_least), and
-  // their approximations.
+  double speed_bound(const Columns<Int>& s) const;
+  // The list for the current world and the next horizon: the skin, keys of the inflated boxes, the slots in
+  // cell order again, and the broad phase (impl/pair_list.hpp).
   template <class Int>
-  void commit(Columns<Int>& s, bool from_least);
+  void rebuild(Columns<Int>& s);
+  // The slots touched by the step's contacts take their least contact's velocity (all read first); a GMP
+  // state first checks that no new position rounds to ±infinity (PositionOverflow, nothing changed).
+  template <class Int>
+  void take_velocities(Columns<Int>& s);
+  // For every slot (every) or for the slots in a listed pair only (the others' moves wait in pending_): with
+  // Move, X ← X + V in place, without it the pending moves X ← X + pending_·V of every slot that has them;
+  // then their approximations, and error_bound_ over those.
+  template <bool Move, class Int>
+  void update(Columns<Int>& s, bool every);
+  // By slot, the moves not taken yet (pending_ for a slot in no listed pair, else 0).
+  std::vector<std::uint64_t> pending_moves() const;
 
   EngineOptions options_;
   unsigned threads_ = 1;
-  std::uint64_t steps_ = 0;
+  EngineStats stats_;
   std::variant<Columns<exact::Word>, Columns<exact::Narrow>, Columns<exact::Wide>> state_;
   exact::Wide den_, den_v_;  // D = 60·L and L
   exact::Wide overflow_at_;  // (2^1024 − 2^970)·D: |X| at least this rounds to ±infinity
   exact::NarrowMagnitude narrow_den_ = 1, narrow_den_v_ = 1;  // D and L, while fixed-width
-  double inverse_den_ = 1;                                    // RN(1/D), while fixed-width
+  double inverse_den_ = 1, inverse_den_v_ = 1;                // RN(1/D) and RN(1/L), while fixed-width
   std::uint64_t proven_until_ = 0;  // the fixed-width state is proven to fit through this step
   // Per circle (by index): ρ, the nearest double of the radius, and a bound on |ρ − r| (0 for a double input).
   std::vector<double> radius_, radius_error_;
   bool radii_exact_ = true;  // every radius_error_ is 0
 
-  // The broad phase over double boxes that contain the exact ones, slots in cell order (slot t holds circle
-  // id_[t]); next_rho_ and next_id_ are the gather's targets.
+  // The list of the pairs that can meet before the next rebuild, over slots in cell order (slot t holds
+  // circle id_[t]), as the double engine keeps it.
+  std::uint64_t rebuild_at_ = 0;  // the step whose world gets the next list
+  std::uint64_t built_at_ = 0;    // the step whose world got the current one
+  HorizonSchedule schedule_;
+  std::uint64_t planned_horizon_ = ~std::uint64_t{0};  // the horizon the grid was planned for
   CellGrid grid_;
-  bool planned_ = false;
   CellOrder order_;
+  PairList pairs_;
   Approximations approx_;
-  double error_bound_ = 0;  // the largest error bound over the slots (commit)
-  std::vector<double> next_rho_;
-  std::vector<std::uint32_t> id_, next_id_, permutation_, least_;
+  double error_bound_ = 0;  // at least the error bound of every slot update kept up to date
+  bool fresh_ = false;      // every slot's approximations are up to date
+  std::vector<std::uint32_t> listed_;  // the slots in a listed pair, ascending
+  double vmax_ = -1;                    // speed_bound of the first world (−1: not yet computed)
+  std::uint64_t pending_ = 0;           // steps whose moves the slots in no listed pair have not taken
+  std::vector<std::uint32_t> id_, permutation_, least_, scratch_id_;
+  std::vector<std::vector<std::uint32_t>> touched_;
+  // The rebuild's radii (inflated by the skin and the centres' errors; padded by the errors alone) and
+  // the gather's scratch.
+  std::vector<double> inflated_, padded_, scratch_;
   std::vector<CellKey> key_, next_key_;
   std::vector<unsigned> levels_;
   std::array<std::size_t, CellGrid::kLevels + 1> level_begin_{};
-  std::vector<std::vector<ContactOffer>> offers_;
 };
 
 }  // namespace circles::impl

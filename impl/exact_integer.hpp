@@ -82,6 +82,12 @@ inline Decision intersect_approximate(double ax, double ay, double rho_a, double
   return static_cast<Decision>((decided & positive) | (!decided) << 1);
 }
 
+// The pair list's radii (impl/exact_engine.cpp, rebuild): a circle whose centre is within e of (a_x, a_y) on
+// each axis, so within √2·e in the plane, and whose radius is within e of ρ has r + |a − p| ≤ ρ + (1 + √2)·e,
+// so the disc of that radius around a holds the exact disc. kCentreSpread = 2.5 ≥ (1 + √2)·(1 + 2^-5) covers
+// 1 + √2 = 2.41421… with the two roundings of RN(RN(e·2.5) + skin) to spare (docs/exact-engine.md).
+inline constexpr double kCentreSpread = 2.5;
+
 // RN(n/d) for d > 0. Narrow is exact integer division with a sticky remainder; Wide takes the same division
 // when |n| < 2^126 and d < 2^127, else goes through spec::nearest_double (magnitudes beyond the double range
 // give ±infinity there).

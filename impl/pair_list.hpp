@@ -24,6 +24,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <vector>
 
 namespace circles::impl {
@@ -253,5 +254,18 @@ class PairList {
   std::uint64_t horizon_ = 0, earliest_ = 0;
   std::size_t size_ = 0, tests_ = 0, slots_ = 0, lonely_ = 0;
 };
+
+// The listed pairs as circle indices {i, j}, i < j, each once, in order, for slots where slot t holds circle
+// id[t]: what the engines' candidates() give the debug validator.
+inline std::vector<CandidatePair> listed_pairs(const PairList& pairs, std::span<const std::uint32_t> id) {
+  std::vector<CandidatePair> out;
+  pairs.for_each([&](std::size_t a, std::size_t b) {
+    const std::uint32_t i = id[a], j = id[b];
+    out.push_back(i < j ? CandidatePair{i, j} : CandidatePair{j, i});
+  });
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
 
 }  // namespace circles::impl

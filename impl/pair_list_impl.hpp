@@ -114,15 +114,9 @@ std::size_t PairList::least_contacts(std::uint64_t j, unsigned threads, std::vec
   const std::size_t chunks = chunks_.size();
   touched.resize(chunks);
   std::vector<std::array<std::size_t, 2>> counts(chunks);  // per chunk: pairs tested, pairs intersecting
-  // A slot's first offer records it as touched; later ones keep the least (a strict total order, so the
-  // order of the offers cannot change the result).
+  // A slot's first offer records it as touched (impl/contacts.hpp).
   const auto offer = [&](std::size_t to, std::size_t from, std::vector<std::uint32_t>& list) {
-    if (least[to] == to) {
-      list.push_back(static_cast<std::uint32_t>(to));
-      least[to] = static_cast<std::uint32_t>(from);
-    } else if (precedes(from, least[to])) {
-      least[to] = static_cast<std::uint32_t>(from);
-    }
+    if (offer_least_contact(least, to, from, precedes)) list.push_back(static_cast<std::uint32_t>(to));
   };
   // The buckets active at step j: 0 … j, the last one (first steps ≥ kBuckets − 1) pair by pair.
   const std::size_t last = std::min<std::uint64_t>(j, kBuckets - 1);

@@ -409,6 +409,23 @@ TEST(run, gives_the_double_engines_work_and_none_for_the_oracle) {
   EXPECT_FALSE(run(apart, RunOptions{3, &engine("oracle"), 1, ""}).work);
 }
 
+TEST(run, gives_the_exact_engines_work_counted_as_the_double_engine_counts_it) {
+  // The same two circles: the exact engine keeps its pair lists as the double engine does, so the same
+  // steps, lists built, quiet steps and circle-steps with no test; on touching circles, the same contacts.
+  const Circles apart{{0, 0, 1, 0, 1}, {100, 0, -1, 0, 1}};
+  for (const Circles& w : {apart, kTouching}) {
+    const RunResult double_run = run(w, RunOptions{50, &engine("double"), 1, ""});
+    const RunResult exact_run = run(w, RunOptions{50, &engine("exact"), 1, ""});
+    ASSERT_TRUE(double_run.work);
+    ASSERT_TRUE(exact_run.work);
+    EXPECT_EQ(exact_run.work->steps, 50u);
+    EXPECT_EQ(exact_run.work->rebuilds, double_run.work->rebuilds);
+    EXPECT_EQ(exact_run.work->contacts, double_run.work->contacts);
+    EXPECT_EQ(exact_run.work->quiet_steps, double_run.work->quiet_steps);
+    EXPECT_EQ(exact_run.work->lonely_circle_steps, double_run.work->lonely_circle_steps);
+  }
+}
+
 TEST(run, refuses_a_frame_every_0_steps) {
   RunOptions options{3, &engine("double"), 1, ""};
   options.every = 0;

@@ -18,6 +18,7 @@
 #include <optional>
 #include <random>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "formats/scene.hpp"
@@ -288,8 +289,8 @@ TEST(exact_engine, rejects_a_rational_whose_nearest_double_is_infinite_naming_ci
 // A benchmark scene with positions on multiples of 1/64 and moves v/60 on multiples of 1/64 too
 // (v a multiple of 15/16): every move is exact in doubles, so the correctly rounded double engine never
 // rounds and must equal the exact engine bit for bit, on every step.
-Circles exact_move_scene(std::size_t n) {
-  Circles w = random_scene(n, 0.1, 7);
+Circles exact_move_scene(std::size_t n, double coverage = 0.1) {
+  Circles w = random_scene(n, coverage, 7);
   for (auto& c : w) {
     c[0] = std::round(c[0] * 64) / 64;
     c[1] = std::round(c[1] * 64) / 64;
@@ -319,6 +320,191 @@ TEST(exact_engine, takes_one_correctly_rounded_step_like_the_all_pairs_reference
   ExactEngine engine(World(w), EngineOptions{.threads = 2});
   engine.step();
   EXPECT_EQ(engine.world().circles(), step_all_pairs(World(w)).circles());
+}
+
+// ── Pairs kept across steps ───────────────────────────────────────────────────────────────────────────
+//
+// The exact engine keeps a PairList like the double engine, with the skin of its speed term alone (moves are
+// exact) and radii padded by its approximations' errors (docs/exact-engine.md, "Pairs kept across steps").
+// Each bound at its edge, then every horizon and thread count against each other and the oracle.
+
+EngineOptions kept(std::uint64_t horizon, unsigned threads = 1) {
+  return {.threads = threads, .keep_pairs = true, .horizon = horizon};
+}
+
+// Steps `engine` and the oracle from w side by side for `steps` steps; the first step at which they differ,
+// or 0.
+int first_difference(ExactEngine& engine, spec::Sequence w, int steps) {
+  for (int t = 1; t <= steps; ++t) {
+    engine.step();
+    w = spec::resolved_step(w);
+    if (engine.exact() != w) return t;
+  }
+  return 0;
+}
+
+TEST(exact_engine, kept_lists_hold_a_pair_that_meets_exactly_when_the_horizon_ends) {
+  // Two unit circles at ±(1 + H), closing at v = 60 each (one unit a step, exact): world H is the first in
+  // which they touch, exactly tangent, and the step from it exchanges their velocities. The list built at
+  // world 0 for horizon H must hold the pair. Its slack is kSpeedBound's margin, H·2^-44.2, and the centres'
+  // padding, 2.5·e = 2.5·(1 + H)·2^-49 per circle, so a skin below the exact bound H by a relative 2^-46
+  // drops the pair for every H here (tried: the list is then empty and the engine misses the contact). One
+  // unit of gap more and the pair is not listed.
+  for (const std::uint64_t h : {1u, 2u, 7u, 16u, 100u, 1000u}) {
+    const double c = 1 + static_cast<double>(h);
+    const Circles w{{-c, 0, 60, 0, 1}, {c, 0, -60, 0, 1}};
+    ExactEngine engine(World(w), kept(h));
+    EXPECT_EQ(engine.candidates(), (std::vector<CandidatePair>{{0, 1}})) << "H = " << h;
+    EXPECT_EQ(first_difference(engine, exact_of(w), static_cast<int>(h) + 3), 0) << "H = " << h;
+    EXPECT_EQ(engine.world().circles()[0][2], -60) << "H = " << h << ": they never met";
+    EXPECT_EQ(engine.stats().rebuilds, 2u) << "H = " << h;
+    const Circles farther{{-c - 1, 0, 60, 0, 1}, {c + 1, 0, -60, 0, 1}};
+    EXPECT_TRUE(ExactEngine(World(farther), kept(h)).candidates().empty()) << "H = " << h;
+  }
+}
+
+TEST(exact_engine, kept_lists_hold_a_pair_whose_speed_no_double_holds_when_it_meets_at_the_horizons_end) {
+  // Positions on thirds (L = 3, D = 180) and v = ±20: each circle moves 1/3 a step, exactly; V = 60 and the
+  // speed bound reads it as 60·RN(1/3), below 20 by a relative 2^-54, which kSpeedBound's margin must cover.
+  // Circles at ±(1 + H/3) touch exactly in world H.
+  for (const int h : {1, 2, 7, 16, 100}) {
+    const spec::Q c = 1 + spec::Q(h, 3);
+    const spec::Sequence w{spec::circle(-c, 0, 20, 0, 1), spec::circle(c, 0, -20, 0, 1)};
+    ExactEngine engine(w, kept(static_cast<std::uint64_t>(h)));
+    ASSERT_EQ(engine.denominator(), Wide(180));
+    EXPECT_EQ(engine.candidates(), (std::vector<CandidatePair>{{0, 1}})) << "H = " << h;
+    EXPECT_EQ(first_difference(engine, w, h + 3), 0) << "H = " << h;
+    EXPECT_EQ(engine.exact()[0].v.x(), spec::Q(-20)) << "H = " << h << ": they never met";
+    const spec::Q d = c + spec::Q(1, 3);
+    const spec::Sequence farther{spec::circle(-d, 0, 20, 0, 1), spec::circle(d, 0, -20, 0, 1)};
+    EXPECT_TRUE(ExactEngine(farther, kept(static_cast<std::uint64_t>(h))).candidates().empty()) << "H = " << h;
+  }
+}
+
+TEST(exact_engine, kept_lists_pad_radii_by_one_plus_root_two_errors_with_the_margin_the_derivation_claims) {
+  // kCentreSpread ≥ (1 + √2)·(1 + 2^-5), and below (1 + √2)·(1 + 2^-4): by squares, exactly.
+  const spec::Q k = spec::exact(exact::kCentreSpread);
+  const auto root_two_below = [&](const spec::Q& factor) {  // √2 ≤ k/factor − 1
+    const spec::Q x = k / factor - 1;
+    return x > 0 && x * x >= 2;
+  };
+  EXPECT_TRUE(root_two_below(1 + spec::Q(1, 32)));
+  EXPECT_FALSE(root_two_below(1 + spec::Q(1, 16)));
+}
+
+RC_GTEST_PROP(exact_engine, follows_the_oracle_through_a_tangency_with_any_horizon_or_none, ()) {
+  const spec::Sequence w = *tangency_after_some_steps();
+  const auto horizon = *rc::gen::inRange<std::uint64_t>(0, 65);
+  const bool keep = *rc::gen::arbitrary<bool>();
+  ExactEngine engine(w, EngineOptions{.threads = 1, .keep_pairs = keep, .horizon = horizon});
+  follow(engine, w, 70);
+}
+
+RC_GTEST_PROP(exact_engine, follows_the_oracle_on_rational_worlds_with_any_horizon_or_none, ()) {
+  const spec::Sequence w = *gen::world(spec::Radii::non_negative);
+  const auto horizon = *rc::gen::inRange<std::uint64_t>(0, 65);
+  const bool keep = *rc::gen::arbitrary<bool>();
+  ExactEngine engine(w, EngineOptions{.threads = 1, .keep_pairs = keep, .horizon = horizon});
+  follow(engine, w, *rc::gen::inRange(1, 61));
+}
+
+// Steps the double engine and `engines` side by side; every engine's world() must equal the double engine's
+// after every step.
+void lockstep(Engine& doubles, std::vector<ExactEngine>& engines, int steps) {
+  for (int t = 1; t <= steps; ++t) {
+    doubles.step();
+    const Circles expected = doubles.world().circles();
+    for (ExactEngine& e : engines) {
+      e.step();
+      ASSERT_EQ(e.world().circles(), expected) << "step " << t << ", " << e.threads() << " threads";
+    }
+  }
+}
+
+TEST(exact_engine, every_horizon_and_thread_count_gives_the_same_state_as_the_double_engine_where_moves_are_exact) {
+  // 12000 circles at 10% coverage (several chunks on two threads, contacts across chunk boundaries), every
+  // move exact in doubles: the double engine is the oracle's trajectory here. Horizons 0 to 64, the
+  // schedule's own and a list for each step alone, on one and two threads, after every step.
+  const Circles w = exact_move_scene(12000);
+  Engine doubles(World(w), EngineOptions{.threads = 1});
+  std::vector<ExactEngine> engines;
+  for (const unsigned threads : {1u, 2u}) {
+    engines.emplace_back(World(w), EngineOptions{.threads = threads, .keep_pairs = false});
+    for (const std::uint64_t h : {0u, 1u, 2u, 3u, 5u, 8u, 17u, 33u, 64u}) engines.emplace_back(World(w), kept(h, threads));
+  }
+  lockstep(doubles, engines, 16);
+  EXPECT_GT(doubles.stats().contacts, 1000u) << "too few contacts to mean anything";
+  for (const ExactEngine& e : engines) {
+    EXPECT_EQ(e.exact(), engines[0].exact());
+    EXPECT_EQ(e.stats().contacts, doubles.stats().contacts);
+  }
+  EXPECT_EQ(engines[0].stats().rebuilds, 16u);          // a list for each step alone
+  EXPECT_EQ(engines[9].stats().rebuilds, 1u);           // H = 64: one list for all 16 steps
+  EXPECT_LT(engines[1].stats().rebuilds, 16u / 4 + 2);  // the schedule's: kept
+  EXPECT_GT(engines[0].stats().lonely_circle_steps, 0u);
+}
+
+TEST(exact_engine, moves_lonely_circles_late_and_still_equals_the_double_engine_at_every_step) {
+  // 0.1% coverage: most circles are in no listed pair and take their moves at the next rebuild (update),
+  // while world() and exact() add the pending ones. Every move exact, so the double engine is the oracle.
+  const Circles w = exact_move_scene(20000, 0.001);
+  Engine doubles(World(w), EngineOptions{.threads = 1});
+  std::vector<ExactEngine> engines;
+  for (const unsigned threads : {1u, 2u})
+    for (const std::uint64_t h : {0u, 7u, 40u}) engines.emplace_back(World(w), kept(h, threads));
+  lockstep(doubles, engines, 45);
+  EXPECT_GT(doubles.stats().contacts, 10u) << "too few contacts to mean anything";
+  for (const ExactEngine& e : engines) EXPECT_EQ(e.exact(), engines[0].exact());
+  EXPECT_GT(engines[1].stats().lonely_circle_steps, 45u * 20000 * 3 / 4) << "the circles were not lonely";
+}
+
+TEST(exact_engine, keeps_its_proven_width_through_the_steps_of_a_kept_list) {
+  // The width scenes above with lists that span the switch: positions update in place between rebuilds, and
+  // the width still changes exactly when its proof runs out, the state equal to the oracle's at every step.
+  for (const std::uint64_t h : {1u, 16u, 64u, 100u}) {
+    for (const auto& [v, from, to] : {std::tuple{0x1p55, 64u, 128u}, std::tuple{0x1p119, 128u, 0u}}) {
+      ExactEngine engine(World({{0, 0, v, 0, 1}, {-1e3, 0, 0, 0, 1}}), kept(h));
+      spec::Sequence oracle = engine.exact();
+      ASSERT_EQ(engine.width(), from);
+      for (int t = 1; t <= 70; ++t) {
+        engine.step();
+        oracle = spec::resolved_step(oracle);
+        ASSERT_EQ(engine.exact(), oracle) << "H = " << h << ", step " << t;
+        ASSERT_EQ(engine.width(), t <= 64 ? from : to) << "H = " << h << ", step " << t;
+      }
+    }
+  }
+}
+
+TEST(exact_engine, counts_its_work_as_the_double_engine_does) {
+  // Two circles far apart: every step is quiet, no circle is tested, and the schedule lengthens the horizon
+  // as it does for the double engine; then a fixed horizon on a busy scene whose moves are exact: the same
+  // steps, lists and contacts.
+  const Circles apart{{0, 0, 1, 0, 1}, {100, 0, -1, 0, 1}};
+  ExactEngine exact(World(apart), EngineOptions{.threads = 1});
+  Engine doubles(World(apart), EngineOptions{.threads = 1});
+  for (int t = 0; t < 50; ++t) {
+    exact.step();
+    doubles.step();
+  }
+  EXPECT_EQ(exact.stats().steps, 50u);
+  EXPECT_EQ(exact.stats().quiet_steps, 50u);
+  EXPECT_EQ(exact.stats().lonely_circle_steps, 100u);
+  EXPECT_EQ(exact.stats().pairs_tested, 0u);
+  EXPECT_EQ(exact.stats().rebuilds, doubles.stats().rebuilds);
+  const Circles busy = exact_move_scene(3000);
+  ExactEngine e(World(busy), kept(8));
+  Engine d(World(busy), kept(8));
+  for (int t = 0; t < 30; ++t) {
+    e.step();
+    d.step();
+  }
+  EXPECT_EQ(e.stats().steps, 30u);
+  EXPECT_EQ(e.stats().rebuilds, d.stats().rebuilds);
+  EXPECT_EQ(e.stats().contacts, d.stats().contacts);
+  EXPECT_GT(e.stats().contacts, 100u);
+  EXPECT_GE(e.stats().pairs_tested, e.stats().contacts);
+  EXPECT_GT(e.stats().pairs_listed, 0u);
 }
 
 // ── The integer kernels ───────────────────────────────────────────────────────────────────────────────
