@@ -1,0 +1,103 @@
+#include "formats/trace_writer.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <exception>
+#include <stdexcept>
+#include <string>
+#include <thread>
+
+namespace circles::formats {
+
+CircleSource source_of(const Circles& circles) {
+  return [&circles](std::size_t first, std::span<std::array<double, 5>> out) {
+    std::copy_n(circles.begin() + static_cast<std::ptrdiff_t>(first), out.size(), out.begin());
+  };
+}
+
+LineWriter::LineWriter(unsigned threads)
+    : threads_(threads != 0 ? threads : std::max(std::thread::hardware_concurrency(), 1u)) {}
+
+namespace {
+
+// The text of circles [first, first + in.size()) at `out`, which has room for in.size() × kMaxCircleChars
+// characters: each circle ",[px,py,vx,vy,r]", without the comma for circle 0. Returns its end, or nullptr at
+// the first number that is not finite.
+char* format_part(char* out, std::size_t first, std::span<const std::array<double, 5>> in) {
+  for (std::size_t i = 0; i < in.size(); ++i) {
+    if (first + i != 0) *out++ = ',';
+    *out++ = '[';
+    for (std::size_t j = 0; j < 5; ++j) {
+      if (!std::isfinite(in[i][j])) return nullptr;
+      if (j != 0) *out++ = ',';
+      out = json_number::write(out, in[i][j]);
+    }
+    *out++ = ']';
+  }
+  return out;
+}
+
+}  // namespace
+
+std::uint64_t LineWriter::write(const TextSink& sink, std::string_view counter, std::uint64_t number,
+                                std::size_t circles, const CircleSource& source) {
+  std::string text = "{\"";
+  text += counter;
+  text += "\":";
+  text += std::to_string(number);
+  text += ",\"circles\":[";
+  sink(text);
+  std::uint64_t bytes = text.size();
+
+  const std::size_t parts = (circles + kPartCircles - 1) / kPartCircles;
+  const unsigned threads = static_cast<unsigned>(std::clamp<std::size_t>(parts, 1, threads_));
+  if (buffers_.size() < threads) buffers_.resize(threads);
+  // Each part is formatted on some thread, into that thread's buffers, and handed to the sink in the ordered
+  // section, part 0 first: a thread formats its next part while another hands its own over. The first failure
+  // in part order is kept (only the ordered section writes `error`) and ends the work of every later part.
+  std::exception_ptr error;
+  std::atomic<bool> failed = false;
+  const auto count = static_cast<long>(parts);
+#pragma omp parallel for ordered schedule(static, 1) num_threads(threads) if (threads > 1)
+  for (long p = 0; p < count; ++p) {
+    const std::size_t first = static_cast<std::size_t>(p) * kPartCircles;
+    const std::size_t n = std::min(kPartCircles, circles - first);
+    Buffers& own = buffers_[static_cast<std::size_t>(omp_get_thread_num())];
+    const char* end = nullptr;
+    std::exception_ptr own_error;  // nothing may leave the parallel region but through `error`
+    if (!failed.load(std::memory_order_relaxed)) {
+      try {
+        own.circles.resize(kPartCircles);
+        own.text.resize(kPartCircles * kMaxCircleChars);
+        const std::span<std::array<double, 5>> in(own.circles.data(), n);
+        source(first, in);
+        end = format_part(own.text.data(), first, in);
+        if (!end) throw std::domain_error("a JSON number must be finite");
+      } catch (...) {
+        own_error = std::current_exception();
+      }
+    }
+#pragma omp ordered
+    {
+      if (!error) {
+        try {
+          if (own_error) std::rethrow_exception(own_error);
+          sink(std::string_view(own.text.data(), static_cast<std::size_t>(end - own.text.data())));
+          bytes += static_cast<std::uint64_t>(end - own.text.data());
+        } catch (...) {
+          error = std::current_exception();
+          failed = true;
+        }
+      }
+    }
+  }
+  if (error) std::rethrow_exception(error);
+  text = "]}\n";
+  sink(text);
+  return bytes + text.size();
+}
+
+}  // namespace circles::formats
