@@ -332,17 +332,18 @@ int main(int argc, char** argv) {
       // The progress bar only on a terminal: output to a pipe, a file or CI stays free of it.
       if (isatty(STDERR_FILENO)) options.progress = &std::cerr;
       if (run->count("--steps") == 0 && scene.steps) options.steps = *scene.steps;
-      const Circles world = random ? random_world(n, coverage, seed, run_bytes_per_circle(engine_name)) : doubles_of(scene);
+      Circles world = random ? random_world(n, coverage, seed, run_bytes_per_circle(engine_name)) : doubles_of(scene);
+      const std::size_t circle_count = world.size();
       RunResult result;
       try {
-        result = circles::cli::run(world, options);
+        result = circles::cli::run(std::move(world), options);
       } catch (const std::invalid_argument& e) {  // options run() refuses before any output, e.g. --exact-trace
         std::cerr << "circles run: " << e.what() << "\n";
         return 2;
       }
       std::cout << "circles run: " << scene_name << ": ";
-      print_summary(result, world.size(), options, std::cout);
-      if (stats) print_stats(result, world.size(), options, std::cout);
+      print_summary(result, circle_count, options, std::cout);
+      if (stats) print_stats(result, circle_count, options, std::cout);
       if (!result.overflow) return 0;
       std::cerr << "circles run: " << result.overflow->what() << "; stopped after " << result.steps << " steps";
       if (!trace.empty()) std::cerr << ", and the trace " << trace << " holds w_0 to w_" << result.steps;

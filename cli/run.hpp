@@ -66,7 +66,10 @@ struct RunResult {
 // Every output is checked before the first step: the name of the video and ffmpeg (VideoError), the trace's
 // and the video's temporary files and the frames' directory (OutputError). A failure leaves no trace and no
 // video file behind; frames already written stay, each a complete PNG.
-RunResult run(const Circles& world, const RunOptions& options);
+//
+// `world` is taken by value so that a caller done with it can move it in: run() frees it once the stepper holds
+// w_0, which for a big world is memory the steps can use.
+RunResult run(Circles world, const RunOptions& options);
 
 // {"step":t,"circles":[["px","py","vx","vy","r"],...]} without a newline, each number the exact "n/d" of
 // cli::fraction (cli::append_exact_world): a line of --exact-trace.
