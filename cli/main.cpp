@@ -20,6 +20,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <csignal>
 #include <optional>
 #include <filesystem>
 #include <cstdint>
@@ -80,6 +81,9 @@ void add_random_options(CLI::App* command, CLI::Option* scene, RandomOptions& ra
 }  // namespace
 
 int main(int argc, char** argv) {
+  // A write beyond the file size limit (ulimit -f) fails with EFBIG instead of killing the program, so that
+  // it ends like a full disk: a message naming the file, and no half-written output left.
+  std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{"circles: a conformance suite for the circles physics spec"};
   app.require_subcommand(0, 1);
 
