@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <atomic>
+#include <condition_variable>
 #include <cmath>
 #include <exception>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -55,33 +57,41 @@ std::uint64_t LineWriter::write(const TextSink& sink, std::string_view counter, 
   const std::size_t parts = (circles + kPartCircles - 1) / kPartCircles;
   const unsigned threads = static_cast<unsigned>(std::clamp<std::size_t>(parts, 1, threads_));
   if (buffers_.size() < threads) buffers_.resize(threads);
-  // Each part is formatted on some thread, into that thread's buffers, and handed to the sink in the ordered
-  // section, part 0 first: a thread formats its next part while another hands its own over. The first failure
-  // in part order is kept (only the ordered section writes `error`) and ends the work of every later part.
+  // Worker w of `workers` (OpenMP's threads, those the engines step on: started already, and busy here instead
+  // of spinning idle beside the formatting) formats parts w, w + workers, ... into its own buffers and hands
+  // each to the sink at its turn, part 0 first: a worker formats its next part while another hands its own
+  // over. A worker waits for its turn asleep on a condition variable, not spinning (OpenMP's ordered loop
+  // spins by default, which on a machine with no free core took the core the formatting needed). The first
+  // failure in part order is kept (only the worker whose turn it is writes `error`) and ends the work of every
+  // later part.
   std::exception_ptr error;
   std::atomic<bool> failed = false;
-  const auto count = static_cast<long>(parts);
-#pragma omp parallel for ordered schedule(static, 1) num_threads(threads) if (threads > 1)
-  for (long p = 0; p < count; ++p) {
-    const std::size_t first = static_cast<std::size_t>(p) * kPartCircles;
-    const std::size_t n = std::min(kPartCircles, circles - first);
-    Buffers& own = buffers_[static_cast<std::size_t>(omp_get_thread_num())];
-    const char* end = nullptr;
-    std::exception_ptr own_error;  // nothing may leave the parallel region but through `error`
-    if (!failed.load(std::memory_order_relaxed)) {
-      try {
-        own.circles.resize(kPartCircles);
-        own.text.resize(kPartCircles * kMaxCircleChars);
-        const std::span<std::array<double, 5>> in(own.circles.data(), n);
-        source(first, in);
-        end = format_part(own.text.data(), first, in);
-        if (!end) throw std::domain_error("a JSON number must be finite");
-      } catch (...) {
-        own_error = std::current_exception();
+  std::mutex turns;
+  std::condition_variable next;
+  std::size_t turn = 0;       // the part whose text goes to the sink next
+  const auto work = [&](std::size_t w, std::size_t workers) {
+    Buffers& own = buffers_[w];
+    for (std::size_t p = w; p < parts; p += workers) {
+      const std::size_t first = p * kPartCircles;
+      const std::size_t n = std::min(kPartCircles, circles - first);
+      const char* end = nullptr;
+      std::exception_ptr own_error;
+      if (!failed.load(std::memory_order_relaxed)) {
+        try {
+          own.circles.resize(kPartCircles);
+          own.text.resize(kPartCircles * kMaxCircleChars);
+          const std::span<std::array<double, 5>> in(own.circles.data(), n);
+          source(first, in);
+          end = format_part(own.text.data(), first, in);
+          if (!end) throw std::domain_error("a JSON number must be finite");
+        } catch (...) {
+          own_error = std::current_exception();
+        }
       }
-    }
-#pragma omp ordered
-    {
+      {
+        std::unique_lock lock(turns);
+        next.wait(lock, [&] { return turn == p; });
+      }
       if (!error) {
         try {
           if (own_error) std::rethrow_exception(own_error);
@@ -92,8 +102,15 @@ std::uint64_t LineWriter::write(const TextSink& sink, std::string_view counter, 
           failed = true;
         }
       }
+      {
+        const std::lock_guard lock(turns);
+        ++turn;
+      }
+      next.notify_all();
     }
-  }
+  };
+#pragma omp parallel num_threads(threads) if (threads > 1)
+  work(static_cast<std::size_t>(omp_get_thread_num()), static_cast<std::size_t>(omp_get_num_threads()));
   if (error) std::rethrow_exception(error);
   text = "]}\n";
   sink(text);
