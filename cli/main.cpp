@@ -20,6 +20,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <csignal>
 #include <optional>
 #include <filesystem>
 #include <cstdint>
@@ -80,6 +81,9 @@ void add_random_options(CLI::App* command, CLI::Option* scene, RandomOptions& ra
 }  // namespace
 
 int main(int argc, char** argv) {
+  // A write beyond the file size limit (ulimit -f) fails with EFBIG instead of killing the program, so that
+  // it ends like a full disk: a message naming the file, and no half-written output left.
+  std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{"circles: a conformance suite for the circles physics spec"};
   app.require_subcommand(0, 1);
 
@@ -335,19 +339,20 @@ int main(int argc, char** argv) {
       if (isatty(STDERR_FILENO)) options.progress = &std::cerr;
       const std::optional<std::uint64_t> scene_steps = from_file ? file_world.steps : scene.steps;
       if (run->count("--steps") == 0 && scene_steps) options.steps = *scene_steps;
-      const Circles world = random      ? random_world(n, coverage, seed, run_bytes_per_circle(engine_name))
-                            : from_file ? std::move(file_world.circles)
-                                        : doubles_of(scene);
+      Circles world = random      ? random_world(n, coverage, seed, run_bytes_per_circle(engine_name))
+                      : from_file ? std::move(file_world.circles)
+                                  : doubles_of(scene);
+      const std::size_t circle_count = world.size();
       RunResult result;
       try {
-        result = circles::cli::run(world, options);
+        result = circles::cli::run(std::move(world), options);
       } catch (const std::invalid_argument& e) {  // options run() refuses before any output, e.g. --exact-trace
         std::cerr << "circles run: " << e.what() << "\n";
         return 2;
       }
       std::cout << "circles run: " << scene_name << ": ";
-      print_summary(result, world.size(), options, std::cout);
-      if (stats) print_stats(result, world.size(), options, std::cout);
+      print_summary(result, circle_count, options, std::cout);
+      if (stats) print_stats(result, circle_count, options, std::cout);
       if (!result.overflow) return 0;
       std::cerr << "circles run: " << result.overflow->what() << "; stopped after " << result.steps << " steps";
       if (!trace.empty()) std::cerr << ", and the trace " << trace << " holds w_0 to w_" << result.steps;

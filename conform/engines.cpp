@@ -6,6 +6,8 @@
 
 #include <array>
 #include <cmath>
+#include <memory>
+#include <vector>
 
 namespace circles::conform {
 
@@ -22,6 +24,13 @@ void Stepper::step() {
   ++steps_;
 }
 
+formats::CircleSource Stepper::source() const {
+  auto held = std::make_shared<const Circles>(circles());
+  return [held, whole = formats::source_of(*held)](std::size_t first, std::span<std::array<double, 5>> out) {
+    whole(first, out);
+  };
+}
+
 namespace {
 
 // An engine of impl/ (impl::Engine or impl::ExactEngine): its step, with PositionOverflow as an Overflow.
@@ -31,6 +40,16 @@ class ImplStepper final : public Stepper {
   ImplStepper(const Circles& world, unsigned threads)
       : engine_(impl::World(world), impl::EngineOptions{.threads = threads}) {}
   Circles circles() const override { return engine_.world().circles(); }
+  formats::CircleSource source() const override {
+    if constexpr (requires { engine_.slots(); }) {
+      auto slots = std::make_shared<const std::vector<std::uint32_t>>(engine_.slots());
+      return [this, slots](std::size_t first, std::span<std::array<double, 5>> out) {
+        engine_.read_circles(*slots, first, out);
+      };
+    } else {
+      return Stepper::source();
+    }
+  }
   std::optional<spec::Sequence> exact() const override {
     if constexpr (requires { engine_.exact(); }) return engine_.exact();
     return std::nullopt;
@@ -57,6 +76,7 @@ class OracleStepper final : public Stepper {
  public:
   OracleStepper(const Circles& world, unsigned) : world_(world) {}
   Circles circles() const override { return world_; }
+  formats::CircleSource source() const override { return formats::source_of(world_); }
 
  private:
   std::optional<Overflow> advance() override {

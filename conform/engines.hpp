@@ -8,6 +8,7 @@
 #pragma once
 
 #include "formats/protocol.hpp"
+#include "formats/trace_writer.hpp"  // formats::CircleSource
 #include "impl/pair_list.hpp"  // impl::EngineStats
 #include "spec/oracle.hpp"  // spec::Sequence
 #include "spec/outside_c.hpp"
@@ -48,6 +49,10 @@ class Stepper {
   void step();
   std::uint64_t steps() const noexcept { return steps_; }
   virtual Circles circles() const = 0;
+  // w_steps() read a slice at a time (formats/trace_writer.hpp), valid until the next step: what circles()
+  // returns, without its copy of the world from an engine of impl/, which reads its own arrays; the others
+  // hold a copy of circles().
+  virtual formats::CircleSource source() const;
   // w_steps() itself, as rationals, from an engine that keeps the exact sequence (EngineEntry::exact); nullopt
   // from one that keeps only doubles.
   virtual std::optional<spec::Sequence> exact() const { return std::nullopt; }

@@ -16,16 +16,21 @@ namespace circles::formats::json_number {
 double from_integer(std::int64_t n) { return static_cast<double>(n); }
 double from_integer(std::uint64_t n) { return static_cast<double>(n); }
 
+char* write(char* out, double x) noexcept {
+  // to_chars writes the shortest round-trip digits, in fixed form only where that is no longer than the
+  // scientific one; an integer's text gets ".0". The scan for '.' and 'e' reads what was just written.
+  char* const end = std::to_chars(out, out + kMaxChars, x).ptr;
+  for (const char* c = out; c != end; ++c)
+    if (*c == '.' || *c == 'e') return end;
+  end[0] = '.';
+  end[1] = '0';
+  return end + 2;
+}
+
 void append(std::string& out, double x) {
   if (!std::isfinite(x)) throw std::domain_error("a JSON number must be finite");
-  // to_chars writes the shortest round-trip digits, in fixed form only where that is no longer than the
-  // scientific one, which has at most 24 characters ("-2.2250738585072014e-308": sign, 17 digits, point,
-  // "e-308"); with ".0" that is 26, so 32 always suffice.
-  std::array<char, 32> text{};
-  const auto end = std::to_chars(text.data(), text.data() + text.size(), x).ptr;
-  const std::string_view written(text.data(), static_cast<std::size_t>(end - text.data()));
-  out += written;
-  if (written.find_first_of(".e") == std::string_view::npos) out += ".0";
+  std::array<char, kMaxChars> text{};
+  out.append(text.data(), write(text.data(), x));
 }
 
 void append_any(std::string& out, double x) {

@@ -20,6 +20,7 @@
 // an answer), and messages about an answer write them so (append_any, decimal_and_hex).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -31,8 +32,16 @@ namespace circles::formats::json_number {
 double from_integer(std::int64_t n);
 double from_integer(std::uint64_t n);
 
-// Appends the shortest text that reads back as x, with ".0" added where it would read as an integer. Throws
-// std::domain_error for NaN and infinities, which JSON cannot write.
+// The longest text write() and append() give a double: to_chars' shortest form is at most 24 characters,
+// the scientific "-2.2250738585072014e-308" (sign, 17 digits, point, "e-308"; a fixed form is chosen only
+// when it is no longer), and ".0" may follow it.
+inline constexpr std::size_t kMaxChars = 24 + 2;
+
+// Writes the shortest text that reads back as x, with ".0" added where it would read as an integer, at `out`,
+// which has room for kMaxChars characters, and returns the end of the text. x must be finite (append checks).
+char* write(char* out, double x) noexcept;
+
+// Appends write()'s text. Throws std::domain_error for NaN and infinities, which JSON cannot write.
 void append(std::string& out, double x);
 
 // append for a finite x; the token NaN, Infinity or -Infinity otherwise. For messages and for answers, never

@@ -110,6 +110,22 @@ World BasicEngine<A>::world() const {
 }
 
 template <class A>
+std::vector<std::uint32_t> BasicEngine<A>::slots() const {
+  std::vector<std::uint32_t> slot(now_.id.size());
+  for (std::size_t t = 0; t < slot.size(); ++t) slot[now_.id[t]] = static_cast<std::uint32_t>(t);
+  return slot;
+}
+
+template <class A>
+void BasicEngine<A>::read_circles(std::span<const std::uint32_t> slots, std::size_t first,
+                                  std::span<std::array<double, 5>> out) const {
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    const std::uint32_t t = slots[first + i];
+    out[i] = {now_.px[t], now_.py[t], now_.vx[t], now_.vy[t], now_.r[t]};
+  }
+}
+
+template <class A>
 bool BasicEngine<A>::precedes(std::size_t a, std::size_t b) const noexcept {
   // World::precedes on slots: the same keys, then the circles' indices.
   for (const std::vector<double>* key : {&now_.px, &now_.py, &now_.vx, &now_.vy, &now_.r}) {

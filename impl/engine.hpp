@@ -97,6 +97,13 @@ class BasicEngine {
 
   // The current world, circle k at index k as given to the constructor.
   World world() const;
+  // The current world read a slice at a time, without the copy world() makes (for a trace of a big world):
+  // slots() gives each circle's place in the engine's own order, valid until the next step; then
+  // read_circles(slots, first, out) sets out[i] to circle first + i as world() has it, [px, py, vx, vy, r].
+  // It only reads, so threads may call it at once on any slices.
+  std::vector<std::uint32_t> slots() const;
+  void read_circles(std::span<const std::uint32_t> slots, std::size_t first,
+                    std::span<std::array<double, 5>> out) const;
   // Steps taken since construction.
   std::uint64_t steps() const noexcept { return stats_.steps; }
   // Steps whose list was empty: no pair was tested, every circle only moved.

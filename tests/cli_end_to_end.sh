@@ -85,6 +85,15 @@ run_exits_2_leaving_no_file_when_the_trace_cannot_be_written)
     fail "wrong message: $(cat "$dir/err")"
   [ "$(ls "$dir")" = err ] || fail "files left behind: $(ls "$dir")"
   ;;
+run_exits_2_leaving_no_file_when_writing_the_trace_fails_midway)
+  # A file size limit of 1 MB or 2 MB (ulimit -f counts blocks of 512 or 1024 bytes, by shell): the first line of
+  # 20000 circles is about 2 MB, so a write fails midway, as on a full disk.
+  expect_exit 2 sh -c 'ulimit -f 2048; exec "$1" run --random 20000 --steps 2 --trace "$2" >/dev/null 2>"$3"' sh \
+    "$circles" "$dir/t.jsonl" "$dir/err"
+  grep -qx "circles: trace $dir/t.jsonl: cannot write to $dir/t.jsonl.partial-[A-Za-z0-9]*: File too large" \
+    "$dir/err" || fail "wrong message: $(cat "$dir/err")"
+  [ "$(ls "$dir")" = err ] || fail "files left behind: $(ls "$dir")"
+  ;;
 run_and_serve_exit_2_listing_the_engines_for_an_unknown_one)
   for command in run serve; do
     expect_exit 2 sh -c '"$1" "$2" --engine fast </dev/null >/dev/null 2>"$3"' sh "$circles" "$command" "$dir/err"

@@ -5,6 +5,7 @@
 #include "formats/protocol.hpp"
 #include "cli/run.hpp"
 #include "formats/scene.hpp"
+#include "formats/trace_writer.hpp"
 #include "conform/serve.hpp"
 
 #include "properties/generators.hpp"
@@ -17,11 +18,13 @@
 #include <rapidcheck.h>
 #include <rapidcheck/gtest.h>
 
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -237,6 +240,58 @@ TEST(run, keeps_the_trace_of_every_step_before_an_overflow) {
   EXPECT_EQ(dir.files(), std::vector<std::string>{"t.jsonl"});
 }
 
+// A world of several of LineWriter's parts, stepped until the engine has re-sorted its slots: each line is
+// append_line's of the engine's world (read a part at a time from the engine's own arrays, formatted on the
+// threads), and the file is the same bytes for 1 and 2 threads.
+TEST(run, writes_the_same_trace_bytes_as_append_line_on_one_thread_and_two) {
+  const Circles world = random_world(3 * kPartCircles + 11, 0.5, 2, 0);
+  const std::uint64_t steps = 3;
+  std::string want;
+  const auto stepper = engine("double").start(world, 1);
+  want += format_line(kStep, 0, world) + "\n";
+  for (std::uint64_t t = 1; t <= steps; ++t) {
+    stepper->step();
+    want += format_line(kStep, t, stepper->circles()) + "\n";
+  }
+  for (const unsigned threads : {1u, 2u}) {
+    TempDir dir;
+    const auto trace = dir.path / "t.jsonl";
+    const RunResult result = run(world, RunOptions{steps, &engine("double"), threads, trace.string()});
+    std::ifstream in(trace, std::ios::binary);
+    const std::string got{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    EXPECT_TRUE(got == want) << threads << " threads: " << got.size() << " bytes, want " << want.size();
+    EXPECT_EQ(result.trace_bytes, want.size());
+  }
+}
+
+// A trace that cannot be written midway (a file size limit, the way a full disk fails a write): the system's
+// reason, and no file left, neither the trace nor its temporary file.
+TEST(run, leaves_no_file_when_writing_the_trace_fails_midway) {
+  const Circles world = random_world(2 * kPartCircles, 0.5, 3, 0);
+  TempDir dir;
+  const auto trace = dir.path / "t.jsonl";
+  rlimit before{};
+  ASSERT_EQ(getrlimit(RLIMIT_FSIZE, &before), 0);
+  const auto ignored = std::signal(SIGXFSZ, SIG_IGN);  // the write fails with EFBIG instead of a signal
+  rlimit small = before;
+  small.rlim_cur = 1 << 20;  // 1 MiB: the first line is about 3 MB
+  ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &small), 0);
+  std::optional<TraceError> e;
+  try {
+    run(world, RunOptions{2, &engine("double"), 2, trace.string()});
+  } catch (const TraceError& error) {
+    e = error;
+  }
+  setrlimit(RLIMIT_FSIZE, &before);
+  std::signal(SIGXFSZ, ignored);
+  ASSERT_TRUE(e) << "nothing was thrown";
+  const std::string what = e->what();
+  EXPECT_TRUE(what.starts_with("trace " + trace.string() + ": cannot write to " + trace.string() + ".partial-"))
+      << what;
+  EXPECT_TRUE(what.ends_with(": File too large")) << what;
+  EXPECT_TRUE(dir.files().empty());
+}
+
 // The exact state written by --exact-trace, read back with GMP's own parser of "n/d" (not our formatter):
 // world t must be the oracle's exact w_t. kTouching's circles move by ±1/60, which no double holds, so a trace
 // of rounded values would differ from step 1 on.
@@ -346,6 +401,7 @@ TEST(run, prints_stats_one_figure_a_line_leaving_out_what_does_not_apply) {
   result.png = std::chrono::duration<double>(0.012);
   result.video = std::chrono::duration<double>(0.003);
   result.tracing = std::chrono::duration<double>(0.5);
+  result.trace_bytes = 209000000;
   result.total = std::chrono::duration<double>(2);
   const auto stats = [&](const RunOptions& options) {
     std::ostringstream out;
@@ -364,7 +420,8 @@ TEST(run, prints_stats_one_figure_a_line_leaving_out_what_does_not_apply) {
   EXPECT_EQ(stats(options),
             "steps: 4\ncircles: 5\nengine: oracle\nthreads: 1 (the oracle engine has none)\nstepping: 2e-06 s\n"
             "ns per circle-step: 100\nfit pass: 1e-06 s\nframes: 3\ndrawing: 0.006 s (2 ms per frame)\n"
-            "png: 0.012 s (4 ms per frame)\nvideo: 0.003 s (1 ms per frame)\ntrace: 0.5 s\ntotal: 2 s\n");
+            "png: 0.012 s (4 ms per frame)\nvideo: 0.003 s (1 ms per frame)\n"
+            "trace: 0.5 s (209000000 bytes, 418 MB/s)\ntotal: 2 s\n");
   options.engine = &engine("double");
   options.threads = 0;
   EXPECT_TRUE(stats(options).find("\nthreads: " + std::to_string(std::clamp(std::thread::hardware_concurrency(), 1u,

@@ -25,7 +25,8 @@ run_prints_stats_one_figure_a_line)
   printf '%s\n' 'steps: N' 'circles: N' 'engine: double' 'threads: N' 'stepping: N s' 'ns per circle-step: N' \
     'pair lists built: N (keys, re-sort and broad phase; one per N steps)' 'pairs tested: N (N per circle-step)' \
     'pairs in contact: N (N%)' 'steps with no pair to test: N (N%)' 'circle-steps with no contact test: N (N%)' \
-    'fit pass: N s' 'frames: N' 'drawing: N s (N ms per frame)' 'png: N s (N ms per frame)' 'trace: N s' \
+    'fit pass: N s' 'frames: N' 'drawing: N s (N ms per frame)' 'png: N s (N ms per frame)' \
+    'trace: N s (N bytes, N MB/s)' \
     'total: N s' >"$dir/want"
   cmp -s "$dir/shape" "$dir/want" || fail "wrong stats: $(cat "$dir/out")"
   grep -qx 'steps: 50' "$dir/out" && grep -qx 'circles: 10' "$dir/out" && grep -qx 'frames: 6' "$dir/out" &&
