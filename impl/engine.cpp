@@ -313,11 +313,13 @@ void BasicEngine<A>::rebuild() {
   index_levels(now_.key, now_.level_begin, now_.levels);
   const CellView view{now_.key, now_.px, now_.py, inflated_, now_.levels, now_.level_begin};
   // Each pair's first step from its gap (impl/pair_list.hpp), on the radii widened by the slack alone.
-  widened(padded_, slack);
+  // (With no slack, the exact arithmetic's, the padded radii are the radii: no copy.)
+  if (slack > 0) widened(padded_, slack);
   // Most pairs the broad phase offers are decided by the filter of the exact test alone (no square root):
   // disjoint at the inflated radii means never within the horizon, and intersecting at the padded ones means
   // from step 0.
-  const double *px = now_.px.data(), *py = now_.py.data(), *r = padded_.data(), *ri = inflated_.data();
+  const double *px = now_.px.data(), *py = now_.py.data(), *r = slack > 0 ? padded_.data() : now_.r.data(),
+               *ri = inflated_.data();
   pairs_.build(grid_, view, threads_, horizon, [px, py, r, ri, step, horizon](std::size_t a, std::size_t b) {
     return listing_step(px[a], py[a], r[a], ri[a], px[b], py[b], r[b], ri[b], step, horizon);
   });

@@ -186,8 +186,9 @@ struct EngineStats {
 
 // ── The list ──────────────────────────────────────────────────────────────────────────────────────────
 
-struct SlotPair {
-  std::uint32_t a, b;  // slots, a < b
+// A listed pair of slots, a < b, and the first step of the list's horizon from which it is tested.
+struct ListedPair {
+  std::uint32_t a, b, first;
 };
 
 // Pairs of slots grouped by the chunk (impl/contacts.hpp) of their first slot, so that each thread offers
@@ -227,14 +228,16 @@ class PairList {
   template <class F>
   void for_each(F&& f) const {
     for (const Chunk& chunk : chunks_)
-      for (const SlotPair& p : chunk.pairs) f(p.a, p.b);
-    for (const SlotPair& p : global_) f(p.a, p.b);
+      for (const ListedPair& p : chunk.pairs) f(p.a, p.b);
+    for (const ListedPair& p : global_) f(p.a, p.b);
   }
 
  private:
+  // A chunk's pairs are listed in the order the broad phase offers them (by first slot, so each block's pairs
+  // are one run), then each block's run is put in bucket order where it is: the list needs no second copy of
+  // its pairs, which at 10^7 circles is hundreds of megabytes.
   struct Chunk {
-    std::vector<SlotPair> pairs;        // by block, then first step's bucket, then first slot
-    std::vector<std::uint32_t> first;   // each pair's first step
+    std::vector<ListedPair> pairs;      // by block, then first step's bucket, then first slot
     std::vector<std::uint32_t> starts;  // pairs of block k, bucket q: [starts[k·K + q], starts[k·K + q + 1])
     std::vector<ContactOffer> offers;   // a step's contacts for slots of later chunks
   };
@@ -242,15 +245,8 @@ class PairList {
   std::size_t chunk_of(std::size_t slot) const noexcept;
 
   std::vector<Chunk> chunks_;
-  std::vector<SlotPair> global_;  // pairs with a global slot, tested from their first step every step
-  std::vector<std::uint32_t> global_first_;
-  // build's scratch, kept so that a rebuild allocates nothing: per chunk the pairs found with their first
-  // steps in the order found, and which slots are in a pair.
-  struct Found {
-    std::uint32_t a, b, step;
-  };
-  std::vector<std::vector<Found>> found_;
-  std::vector<unsigned char> listed_;
+  std::vector<ListedPair> global_;  // pairs with a global slot, tested from their first step every step
+  std::vector<unsigned char> listed_;  // build's scratch: which slots are in a pair
   std::uint64_t horizon_ = 0, earliest_ = 0;
   std::size_t size_ = 0, tests_ = 0, slots_ = 0, lonely_ = 0;
 };

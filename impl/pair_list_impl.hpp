@@ -30,45 +30,41 @@ void PairList::build(const CellGrid& grid, const CellView& view, unsigned thread
   horizon_ = horizon;
   const std::size_t chunks = chunk_count(n, threads);
   chunks_.resize(chunks);
-  found_.resize(chunks);
   // The pairs of each chunk in the order the broad phase offers them: by first slot.
   for_each_chunk(chunks, threads, [&](std::size_t c) {
-    std::vector<Found>& found = found_[c];
+    std::vector<ListedPair>& found = chunks_[c].pairs;
     found.clear();
     NeighbourCursor cursor;
     for (std::size_t a = chunk_begin(n, chunks, c), end = chunk_begin(n, chunks, c + 1); a < end; ++a)
-      visit_neighbourhood_runs(grid, view, a, cursor, [&](std::size_t begin, std::size_t end) {
-        for (std::size_t b = begin; b < end; ++b)
+      visit_neighbourhood_runs(grid, view, a, cursor, [&](std::size_t run_begin, std::size_t run_end) {
+        for (std::size_t b = run_begin; b < run_end; ++b)
           if (const std::uint32_t step = first(a, b); step <= horizon)
             found.push_back({static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b), step});
       });
   });
   // Global slots (a box too wide for every level) against every slot, each pair once.
   global_.clear();
-  global_first_.clear();
   const std::size_t global = view.level_begin[CellGrid::kGlobalLevel];
   for (std::size_t g = global; g < n; ++g)
     for (std::size_t b = 0; b < n; ++b) {
       if (b == g || (b >= global && b < g)) continue;
       const std::uint32_t step = first(g, b);
       if (step > horizon) continue;
-      global_.push_back({static_cast<std::uint32_t>(std::min(g, b)), static_cast<std::uint32_t>(std::max(g, b))});
-      global_first_.push_back(step);
+      global_.push_back({static_cast<std::uint32_t>(std::min(g, b)), static_cast<std::uint32_t>(std::max(g, b)), step});
     }
-  // Per chunk, a counting sort by (block, bucket), stable, so each bucket stays in slot order; and its tally:
-  // its tests over the horizon, its earliest first step, and the slots in its pairs (a pair's second slot may
-  // be another chunk's, so those marks are relaxed atomic stores, all of the same value).
+  // Per chunk, a counting sort by (block, bucket), stable, so each bucket stays in slot order: the pairs are
+  // by first slot already, so each block's pairs are one run, sorted by bucket where it is through a copy of
+  // that run alone. And its tally: its tests over the horizon, its earliest first step, and the slots in its
+  // pairs (a pair's second slot may be another chunk's, so those marks are relaxed atomic stores, all of the
+  // same value).
   std::vector<unsigned char>& listed = listed_;
   listed.assign(n, 0);
   std::vector<std::array<std::uint64_t, 2>> tally(chunks);  // per chunk: tests, earliest first step
-  const auto count = [&](const std::vector<SlotPair>& pairs, const std::vector<std::uint32_t>& steps,
-                         std::array<std::uint64_t, 2>& into) {
+  const auto count = [&](const std::vector<ListedPair>& pairs, std::array<std::uint64_t, 2>& into) {
     into = {0, horizon + 1};
-    for (const std::uint32_t step : steps) {
-      into[0] += horizon + 1 - step;
-      into[1] = std::min<std::uint64_t>(into[1], step);
-    }
-    for (const SlotPair& p : pairs) {
+    for (const ListedPair& p : pairs) {
+      into[0] += horizon + 1 - p.first;
+      into[1] = std::min<std::uint64_t>(into[1], p.first);
       std::atomic_ref<unsigned char>(listed[p.a]).store(1, std::memory_order_relaxed);
       std::atomic_ref<unsigned char>(listed[p.b]).store(1, std::memory_order_relaxed);
     }
@@ -77,25 +73,24 @@ void PairList::build(const CellGrid& grid, const CellView& view, unsigned thread
     Chunk& chunk = chunks_[c];
     const std::size_t begin = chunk_begin(n, chunks, c), end = chunk_begin(n, chunks, c + 1);
     const std::size_t blocks = (end - begin + kBlockSlots - 1) / kBlockSlots;
-    const std::vector<Found>& found = found_[c];
-    const auto bin = [&](std::size_t i) {
-      return (found[i].a - begin) / kBlockSlots * kBuckets + std::min(found[i].step, kBuckets - 1);
+    std::vector<ListedPair>& pairs = chunk.pairs;
+    const auto bin = [&](const ListedPair& p) {
+      return (p.a - begin) / kBlockSlots * kBuckets + std::min(p.first, kBuckets - 1);
     };
     chunk.starts.assign(blocks * kBuckets + 1, 0);
-    for (std::size_t i = 0; i < found.size(); ++i) ++chunk.starts[bin(i) + 1];
+    for (const ListedPair& p : pairs) ++chunk.starts[bin(p) + 1];
     for (std::size_t k = 1; k < chunk.starts.size(); ++k) chunk.starts[k] += chunk.starts[k - 1];
-    chunk.pairs.resize(found.size());
-    chunk.first.resize(found.size());
     std::vector<std::uint32_t> at(chunk.starts.begin(), chunk.starts.end() - 1);
-    for (std::size_t i = 0; i < found.size(); ++i) {
-      const std::uint32_t to = at[bin(i)]++;
-      chunk.pairs[to] = {found[i].a, found[i].b};
-      chunk.first[to] = found[i].step;
+    std::vector<ListedPair> run;
+    for (std::size_t k = 0; k < blocks; ++k) {
+      // Block k's pairs: [starts[k·K], starts[(k + 1)·K]), since every earlier block's pairs come first.
+      run.assign(pairs.begin() + chunk.starts[k * kBuckets], pairs.begin() + chunk.starts[(k + 1) * kBuckets]);
+      for (const ListedPair& p : run) pairs[at[bin(p)]++] = p;
     }
-    count(chunk.pairs, chunk.first, tally[c]);
+    count(pairs, tally[c]);
   });
   tally.emplace_back();
-  count(global_, global_first_, tally.back());
+  count(global_, tally.back());
   size_ = global_.size();
   tests_ = 0;
   earliest_ = horizon + 1;
@@ -127,7 +122,7 @@ std::size_t PairList::least_contacts(std::uint64_t j, unsigned threads, std::vec
     const std::size_t end = chunk_begin(slots_, chunks, c + 1);
     const std::size_t blocks = (chunk.starts.size() - 1) / kBuckets;
     std::size_t seen = 0, hits = 0;
-    const auto test = [&](const SlotPair p) {
+    const auto test = [&](const ListedPair& p) {
       ++seen;
       if (!intersect(p.a, p.b)) return;
       ++hits;
@@ -144,7 +139,7 @@ std::size_t PairList::least_contacts(std::uint64_t j, unsigned threads, std::vec
       for (std::size_t i = starts[0]; i < whole; ++i) test(chunk.pairs[i]);
       if (last == kBuckets - 1)
         for (std::size_t i = starts[kBuckets - 1]; i < starts[kBuckets]; ++i)
-          if (chunk.first[i] <= j) test(chunk.pairs[i]);
+          if (chunk.pairs[i].first <= j) test(chunk.pairs[i]);
     }
     counts[c] = {seen, hits};
   });
@@ -157,9 +152,9 @@ std::size_t PairList::least_contacts(std::uint64_t j, unsigned threads, std::vec
   for (const Chunk& chunk : chunks_)
     for (const ContactOffer& o : chunk.offers) offer(o.to, o.from, touched[chunk_of(o.to)]);
   for (std::size_t i = 0; i < global_.size(); ++i) {
-    if (global_first_[i] > j) continue;
+    if (global_[i].first > j) continue;
     ++tested;
-    const SlotPair p = global_[i];
+    const ListedPair& p = global_[i];
     if (!intersect(p.a, p.b)) continue;
     ++contacts;
     offer(p.a, p.b, touched[chunk_of(p.a)]);
