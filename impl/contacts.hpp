@@ -16,8 +16,11 @@
 #include "impl/broad_phase.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -54,6 +57,37 @@ void for_each_chunk(std::size_t chunks, unsigned threads, F&& f) {
   const auto count = static_cast<long>(chunks);
 #pragma omp parallel for num_threads(threads) schedule(static) if (chunks > 1)
   for (long c = 0; c < count; ++c) f(static_cast<std::size_t>(c));
+}
+
+// keys[t] = grid.key(px[t], py[t], r[t]) for every slot, per chunk. Where a circle has drifted out of the planned
+// grid (its cell would clamp, which is correct but slow), the grid is planned again and the keys recomputed.
+inline void locate(CellGrid& grid, unsigned threads, std::span<const double> px, std::span<const double> py,
+                   std::span<const double> r, std::span<CellKey> keys) {
+  const std::size_t n = keys.size();
+  const std::size_t chunks = chunk_count(n, threads);
+  std::vector<std::array<double, 4>> extent(chunks);  // per chunk: the least and largest x, then y
+  const auto compute = [&] {
+    for_each_chunk(chunks, threads, [&](std::size_t c) {
+      const std::size_t b = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1);
+      grid.keys(px.subspan(b, e - b), py.subspan(b, e - b), r.subspan(b, e - b), keys.subspan(b, e - b));
+      constexpr double inf = std::numeric_limits<double>::infinity();
+      double xlo = inf, xhi = -inf, ylo = inf, yhi = -inf;
+      for (std::size_t t = b; t < e; ++t) {
+        xlo = std::min(xlo, px[t]);
+        xhi = std::max(xhi, px[t]);
+        ylo = std::min(ylo, py[t]);
+        yhi = std::max(yhi, py[t]);
+      }
+      extent[c] = {xlo, xhi, ylo, yhi};
+    });
+  };
+  compute();
+  bool inside = true;
+  for (const auto& [xlo, xhi, ylo, yhi] : extent) inside = inside && (xlo > xhi || grid.covers(xlo, xhi, ylo, yhi));
+  if (!inside) {
+    grid.plan(px, py, r);
+    compute();
+  }
 }
 
 // Slot `to`'s least contact so far after slot `from`, which intersects it, is offered: least[to] == to means

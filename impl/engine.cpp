@@ -263,31 +263,7 @@ void BasicEngine<A>::rebuild() {
     planned_horizon_ = horizon;
   }
   next_key_.resize(n);
-  std::vector<std::array<double, 4>> extent(chunks);
-  const auto keys = [&] {
-    for_each_chunk(chunks, threads_, [&](std::size_t c) {
-      const std::size_t b = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1);
-      grid_.keys(std::span<const double>(now_.px).subspan(b, e - b), std::span<const double>(now_.py).subspan(b, e - b),
-                 std::span<const double>(inflated_).subspan(b, e - b), std::span<CellKey>(next_key_).subspan(b, e - b));
-      constexpr double inf = std::numeric_limits<double>::infinity();
-      double xlo = inf, xhi = -inf, ylo = inf, yhi = -inf;
-      for (std::size_t t = b; t < e; ++t) {
-        xlo = std::min(xlo, now_.px[t]);
-        xhi = std::max(xhi, now_.px[t]);
-        ylo = std::min(ylo, now_.py[t]);
-        yhi = std::max(yhi, now_.py[t]);
-      }
-      extent[c] = {xlo, xhi, ylo, yhi};
-    });
-  };
-  keys();
-  // Circles drifted out of the planned grid (their cells clamp, which is correct but slow): plan again.
-  bool inside = true;
-  for (const auto& [xlo, xhi, ylo, yhi] : extent) inside = inside && (xlo > xhi || grid_.covers(xlo, xhi, ylo, yhi));
-  if (!inside) {
-    grid_.plan(now_.px, now_.py, inflated_);
-    keys();
-  }
+  locate(grid_, threads_, now_.px, now_.py, inflated_, next_key_);
   if (now_.key.size() != n) now_.key.clear();  // the first layout: no previous order to guide the sort
   const bool sorted = order_.sort(next_key_, now_.key, permutation_);
   std::swap(now_.key, next_key_);

@@ -555,30 +555,7 @@ void ExactEngine::rebuild(Columns<Int>& s) {
     planned_horizon_ = horizon;
   }
   next_key_.resize(n);
-  std::vector<std::array<double, 4>> extent(chunks);
-  const auto keys = [&] {
-    for_each_chunk(chunks, threads_, [&](std::size_t c) {
-      const std::size_t b = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1);
-      grid_.keys(std::span<const double>(a.x).subspan(b, e - b), std::span<const double>(a.y).subspan(b, e - b),
-                 std::span<const double>(inflated_).subspan(b, e - b), std::span<CellKey>(next_key_).subspan(b, e - b));
-      double xlo = kInfinity, xhi = -kInfinity, ylo = kInfinity, yhi = -kInfinity;
-      for (std::size_t t = b; t < e; ++t) {
-        xlo = std::min(xlo, a.x[t]);
-        xhi = std::max(xhi, a.x[t]);
-        ylo = std::min(ylo, a.y[t]);
-        yhi = std::max(yhi, a.y[t]);
-      }
-      extent[c] = {xlo, xhi, ylo, yhi};
-    });
-  };
-  keys();
-  // Circles drifted out of the planned grid (their cells clamp, which is correct but slow): plan again.
-  bool inside = true;
-  for (const auto& [xlo, xhi, ylo, yhi] : extent) inside = inside && (xlo > xhi || grid_.covers(xlo, xhi, ylo, yhi));
-  if (!inside) {
-    grid_.plan(a.x, a.y, inflated_);
-    keys();
-  }
+  locate(grid_, threads_, a.x, a.y, inflated_, next_key_);
   if (key_.size() != n) key_.clear();  // the first layout: no previous order to guide the sort
   const bool sorted = order_.sort(next_key_, key_, permutation_);
   std::swap(key_, next_key_);
@@ -616,15 +593,11 @@ void ExactEngine::rebuild(Columns<Int>& s) {
   // radii may meet now; the rest from their gap (first_step), the padded radii bounding the exact gap below.
   const double *px = a.x.data(), *py = a.y.data(), *r = padded_.data(), *ri = inflated_.data();
   pairs_.build(grid_, view, threads_, horizon, [px, py, r, ri, step, horizon](std::size_t i, std::size_t k) {
-    if (intersect_filter(px[i], py[i], ri[i], px[k], py[k], ri[k]) == Decision::disjoint) return kNever;
-    if (intersect_filter(px[i], py[i], r[i], px[k], py[k], r[k]) == Decision::intersect) return std::uint32_t{0};
-    return first_step(px[i], py[i], r[i], px[k], py[k], r[k], step, horizon);
+    return listing_step(px[i], py[i], r[i], ri[i], px[k], py[k], r[k], ri[k], step, horizon);
   });
-  std::vector<unsigned char> in_pair(n, 0);
-  pairs_.for_each([&in_pair](std::size_t i, std::size_t k) { in_pair[i] = in_pair[k] = 1; });
   listed_.clear();
   for (std::size_t t = 0; t < n; ++t)
-    if (in_pair[t]) listed_.push_back(static_cast<std::uint32_t>(t));
+    if (pairs_.listed(t)) listed_.push_back(static_cast<std::uint32_t>(t));
   built_at_ = stats_.steps;
   stats_.pairs_listed += pairs_.size();
   ++stats_.rebuilds;

@@ -224,6 +224,8 @@ class PairList {
   bool quiet(std::uint64_t j) const noexcept { return size_ == 0 || j < earliest_; }
   // Slots that are in no listed pair: they need no contact test until the next build.
   std::size_t lonely() const noexcept { return lonely_; }
+  // True when `slot` is in some listed pair.
+  bool listed(std::size_t slot) const noexcept { return listed_[slot] != 0; }
   // Every listed pair, for the validator.
   template <class F>
   void for_each(F&& f) const {
@@ -246,7 +248,7 @@ class PairList {
 
   std::vector<Chunk> chunks_;
   std::vector<ListedPair> global_;  // pairs with a global slot, tested from their first step every step
-  std::vector<unsigned char> listed_;  // build's scratch: which slots are in a pair
+  std::vector<unsigned char> listed_;  // which slots are in a pair
   std::uint64_t horizon_ = 0, earliest_ = 0;
   std::size_t size_ = 0, tests_ = 0, slots_ = 0, lonely_ = 0;
 };
