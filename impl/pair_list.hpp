@@ -101,7 +101,7 @@ inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // The first step of a horizon of `horizon` steps, each moving a circle at most `step`, at which two circles of
 // radii ar and br whose centres are dx = RN(bx − ax), dy = RN(by − ay) apart, with d2 = RN(RN(dx²) + RN(dy²)),
 // may intersect: 0 … horizon, or kNever.
-inline std::uint32_t first_step_from(double dx, double dy, double d2, double ar, double br, double step,
+[[gnu::always_inline]] inline std::uint32_t first_step_from(double dx, double dy, double d2, double ar, double br, double step,
                                      std::uint64_t horizon) noexcept {
   const double root = d2 < kInfinity ? std::sqrt(d2) : norm_upper(dx, dy);
   const double gap = root * (1 - kGapRelative) - (ar + br) * (1 + kGapRelative) - kGapAbsolute;
@@ -131,9 +131,9 @@ inline std::uint32_t first_step(double ax, double ay, double ar, double bx, doub
                                   double br_wide, double step, std::uint64_t horizon) noexcept {
   const double dx = bx - ax, dy = by - ay;
   const double d2 = dx * dx + dy * dy;
-  if (sign_filter_of_squares(d2, ar_wide + br_wide, kAbsolute) == Decision::disjoint) [[likely]]
+  if (certainly_disjoint_of_squares(d2, ar_wide + br_wide, kAbsolute)) [[likely]]
     return kNever;
-  if (sign_filter_of_squares(d2, ar + br, kAbsolute) == Decision::intersect) return 0;
+  if (certainly_intersecting_of_squares(d2, ar + br, kAbsolute)) return 0;
   return first_step_from(dx, dy, d2, ar, br, step, horizon);
 }
 
@@ -230,7 +230,7 @@ class PairList {
   template <class F>
   void for_each(F&& f) const {
     for (const Chunk& chunk : chunks_)
-      for (const ListedPair& p : chunk.pairs) f(p.a, p.b);
+      for (std::size_t i = 0; i < chunk.size; ++i) f(chunk.pairs[i].a, chunk.pairs[i].b);
     for (const ListedPair& p : global_) f(p.a, p.b);
   }
 
@@ -239,7 +239,10 @@ class PairList {
   // are one run), then each block's run is put in bucket order where it is: the list needs no second copy of
   // its pairs, which at 10^7 circles is hundreds of megabytes.
   struct Chunk {
-    std::vector<ListedPair> pairs;      // by block, then first step's bucket, then first slot
+    // pairs[0, size): by block, then first step's bucket, then first slot. The vector only grows, so that
+    // a build writes its pairs without zeroing them first or calling out of its loop to append.
+    std::vector<ListedPair> pairs;
+    std::size_t size = 0;
     std::vector<std::uint32_t> starts;  // pairs of block k, bucket q: [starts[k·K + q], starts[k·K + q + 1])
     std::vector<ContactOffer> offers;   // a step's contacts for slots of later chunks
   };

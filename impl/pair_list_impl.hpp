@@ -30,71 +30,87 @@ void PairList::build(const CellGrid& grid, const CellView& view, unsigned thread
   horizon_ = horizon;
   const std::size_t chunks = chunk_count(n, threads);
   chunks_.resize(chunks);
-  // The pairs of each chunk in the order the broad phase offers them: by first slot.
+  // Which slots are in a pair: a pair's second slot may be another chunk's, so those marks are relaxed atomic
+  // stores, all of the same value.
+  std::vector<unsigned char>& listed = listed_;
+  listed.assign(n, 0);
+  const auto mark = [&listed](const ListedPair& p) {
+    std::atomic_ref<unsigned char>(listed[p.a]).store(1, std::memory_order_relaxed);
+    std::atomic_ref<unsigned char>(listed[p.b]).store(1, std::memory_order_relaxed);
+  };
+  std::vector<std::array<std::uint64_t, 2>> tally(chunks + 1);  // per chunk: tests, earliest first step
+  // The pairs of each chunk in the order the broad phase offers them (by first slot), each counted in its
+  // (block, bucket) bin and in the chunk's tally as it is found: its tests over the horizon, its earliest
+  // first step, its slots' marks.
   for_each_chunk(chunks, threads, [&](std::size_t c) {
-    std::vector<ListedPair>& found = chunks_[c].pairs;
-    found.clear();
+    Chunk& chunk = chunks_[c];
+    std::vector<ListedPair>& found = chunk.pairs;
+    const std::size_t begin = chunk_begin(n, chunks, c), end = chunk_begin(n, chunks, c + 1);
+    chunk.starts.assign((end - begin + kBlockSlots - 1) / kBlockSlots * kBuckets + 1, 0);
+    std::uint32_t* const count = chunk.starts.data() + 1;
+    std::size_t size = 0;
+    std::uint64_t tests = 0, earliest = horizon + 1;
     NeighbourCursor cursor;
-    for (std::size_t a = chunk_begin(n, chunks, c), end = chunk_begin(n, chunks, c + 1); a < end; ++a)
+    for (std::size_t a = begin; a < end; ++a) {
+      const std::size_t bins = (a - begin) / kBlockSlots * kBuckets;
       visit_neighbourhood_runs(grid, view, a, cursor, [&](std::size_t run_begin, std::size_t run_end) {
-        for (std::size_t b = run_begin; b < run_end; ++b)
-          if (const std::uint32_t step = first(a, b); step <= horizon)
-            found.push_back({static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b), step});
+        // A copy of the caller's functor per run, in registers: the marks are char stores, which may alias
+        // anything, so a functor in memory would be read again for every candidate.
+        const auto first_of = first;
+        for (std::size_t b = run_begin; b < run_end; ++b) {
+          const std::uint32_t step = first_of(a, b);
+          if (step > horizon) [[likely]]
+            continue;
+          if (size == found.size()) [[unlikely]]
+            found.resize(std::max<std::size_t>(1024, 2 * size));
+          const ListedPair p{static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b), step};
+          found[size++] = p;
+          ++count[bins + std::min(step, kBuckets - 1)];
+          tests += horizon + 1 - step;
+          earliest = std::min<std::uint64_t>(earliest, step);
+          mark(p);
+        }
       });
+    }
+    chunk.size = size;
+    tally[c] = {tests, earliest};
   });
   // Global slots (a box too wide for every level) against every slot, each pair once.
   global_.clear();
   const std::size_t global = view.level_begin[CellGrid::kGlobalLevel];
+  tally[chunks] = {0, horizon + 1};
   for (std::size_t g = global; g < n; ++g)
     for (std::size_t b = 0; b < n; ++b) {
       if (b == g || (b >= global && b < g)) continue;
       const std::uint32_t step = first(g, b);
       if (step > horizon) continue;
       global_.push_back({static_cast<std::uint32_t>(std::min(g, b)), static_cast<std::uint32_t>(std::max(g, b)), step});
+      tally[chunks][0] += horizon + 1 - step;
+      tally[chunks][1] = std::min<std::uint64_t>(tally[chunks][1], step);
+      mark(global_.back());
     }
-  // Per chunk, a counting sort by (block, bucket), stable, so each bucket stays in slot order: the pairs are
-  // by first slot already, so each block's pairs are one run, sorted by bucket where it is through a copy of
-  // that run alone. And its tally: its tests over the horizon, its earliest first step, and the slots in its
-  // pairs (a pair's second slot may be another chunk's, so those marks are relaxed atomic stores, all of the
-  // same value).
-  std::vector<unsigned char>& listed = listed_;
-  listed.assign(n, 0);
-  std::vector<std::array<std::uint64_t, 2>> tally(chunks);  // per chunk: tests, earliest first step
-  const auto count = [&](const std::vector<ListedPair>& pairs, std::array<std::uint64_t, 2>& into) {
-    into = {0, horizon + 1};
-    for (const ListedPair& p : pairs) {
-      into[0] += horizon + 1 - p.first;
-      into[1] = std::min<std::uint64_t>(into[1], p.first);
-      std::atomic_ref<unsigned char>(listed[p.a]).store(1, std::memory_order_relaxed);
-      std::atomic_ref<unsigned char>(listed[p.b]).store(1, std::memory_order_relaxed);
-    }
-  };
+  // Per chunk, the rest of a counting sort by (block, bucket), stable, so each bucket stays in slot order: the
+  // pairs are by first slot already, so each block's pairs are one run, sorted by bucket where it is through a
+  // copy of that run alone.
   for_each_chunk(chunks, threads, [&](std::size_t c) {
     Chunk& chunk = chunks_[c];
-    const std::size_t begin = chunk_begin(n, chunks, c), end = chunk_begin(n, chunks, c + 1);
-    const std::size_t blocks = (end - begin + kBlockSlots - 1) / kBlockSlots;
+    const std::size_t blocks = (chunk.starts.size() - 1) / kBuckets;
+    const std::size_t begin = chunk_begin(n, chunks, c);
     std::vector<ListedPair>& pairs = chunk.pairs;
-    const auto bin = [&](const ListedPair& p) {
-      return (p.a - begin) / kBlockSlots * kBuckets + std::min(p.first, kBuckets - 1);
-    };
-    chunk.starts.assign(blocks * kBuckets + 1, 0);
-    for (const ListedPair& p : pairs) ++chunk.starts[bin(p) + 1];
     for (std::size_t k = 1; k < chunk.starts.size(); ++k) chunk.starts[k] += chunk.starts[k - 1];
     std::vector<std::uint32_t> at(chunk.starts.begin(), chunk.starts.end() - 1);
     std::vector<ListedPair> run;
     for (std::size_t k = 0; k < blocks; ++k) {
       // Block k's pairs: [starts[k·K], starts[(k + 1)·K]), since every earlier block's pairs come first.
       run.assign(pairs.begin() + chunk.starts[k * kBuckets], pairs.begin() + chunk.starts[(k + 1) * kBuckets]);
-      for (const ListedPair& p : run) pairs[at[bin(p)]++] = p;
+      for (const ListedPair& p : run)
+        pairs[at[(p.a - begin) / kBlockSlots * kBuckets + std::min(p.first, kBuckets - 1)]++] = p;
     }
-    count(pairs, tally[c]);
   });
-  tally.emplace_back();
-  count(global_, tally.back());
   size_ = global_.size();
   tests_ = 0;
   earliest_ = horizon + 1;
-  for (const Chunk& chunk : chunks_) size_ += chunk.pairs.size();
+  for (const Chunk& chunk : chunks_) size_ += chunk.size;
   for (const auto& [tests, earliest] : tally) {
     tests_ += tests;
     earliest_ = std::min(earliest_, earliest);
@@ -122,24 +138,31 @@ std::size_t PairList::least_contacts(std::uint64_t j, unsigned threads, std::vec
     const std::size_t end = chunk_begin(slots_, chunks, c + 1);
     const std::size_t blocks = (chunk.starts.size() - 1) / kBuckets;
     std::size_t seen = 0, hits = 0;
+    // Copies of the caller's functors and of the list's address in locals: the loop's stores (least, touched)
+    // cannot make the compiler reload them for every pair.
+    const auto intersects = intersect;
+    const auto before = precedes;
+    const ListedPair* const pairs = chunk.pairs.data();
+    std::vector<std::uint32_t>& mine = touched[c];
     const auto test = [&](const ListedPair& p) {
       ++seen;
-      if (!intersect(p.a, p.b)) return;
+      if (!intersects(p.a, p.b)) [[likely]]
+        return;
       ++hits;
       // A chunk writes the least contact of its own slots only; the rest is offered after the parallel part.
-      offer(p.a, p.b, touched[c]);
-      if (p.b < end)
-        offer(p.b, p.a, touched[c]);
-      else
+      if (offer_least_contact(least, p.a, p.b, before)) mine.push_back(p.a);
+      if (p.b >= end)
         chunk.offers.push_back({p.b, p.a});
+      else if (offer_least_contact(least, p.b, p.a, before))
+        mine.push_back(p.b);
     };
     for (std::size_t k = 0; k < blocks; ++k) {
       const std::uint32_t* starts = chunk.starts.data() + k * kBuckets;
       const std::size_t whole = last == kBuckets - 1 ? starts[kBuckets - 1] : starts[last + 1];
-      for (std::size_t i = starts[0]; i < whole; ++i) test(chunk.pairs[i]);
+      for (std::size_t i = starts[0]; i < whole; ++i) test(pairs[i]);
       if (last == kBuckets - 1)
         for (std::size_t i = starts[kBuckets - 1]; i < starts[kBuckets]; ++i)
-          if (chunk.pairs[i].first <= j) test(chunk.pairs[i]);
+          if (pairs[i].first <= j) test(pairs[i]);
     }
     counts[c] = {seen, hits};
   });

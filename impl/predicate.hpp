@@ -73,6 +73,23 @@ inline Decision sign_filter_of_squares(double q, double s, double absolute) {
   // intersect (1) if decided and positive, disjoint (0) if decided and not, undecided (2) otherwise
   return static_cast<Decision>((decided & positive) | (!decided) << 1);
 }
+// sign_filter_of_squares(q, s, absolute) == Decision::disjoint, in fewer operations, for the loops that
+// mostly reject (the pair lists' broad phase). The same d and bound; "decided and not positive" is
+// |d| > bound ∧ d ≤ 0, which is −d > bound: for d ≤ 0, |d| = −d, and for d > 0, −d < 0 < bound (bound ≥
+// absolute > 0, or +∞ or NaN, where both forms are false). tests/predicate_test.cpp holds the two equal.
+inline bool certainly_disjoint_of_squares(double q, double s, double absolute) {
+  const double p = s * s;
+  const double d = p - q;
+  const double bound = (p + q) * kRelative + absolute;
+  return -d > bound;
+}
+// sign_filter_of_squares(q, s, absolute) == Decision::intersect, likewise: d > bound (then d > 0 and |d| = d).
+inline bool certainly_intersecting_of_squares(double q, double s, double absolute) {
+  const double p = s * s;
+  const double d = p - q;
+  const double bound = (p + q) * kRelative + absolute;
+  return d > bound;
+}
 // The same from dx and dy: q = RN(RN(dx²) + RN(dy²)).
 inline Decision sign_filter(double dx, double dy, double s, double absolute) {
   return sign_filter_of_squares(dx * dx + dy * dy, s, absolute);

@@ -15,11 +15,14 @@
 #include <cstdio>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <map>
 #include <numeric>
 #include <random>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "spec/equations.hpp"
 
@@ -394,6 +397,58 @@ TEST(intersect_exact, agrees_with_the_oracle_on_negative_radii_outside_c) {
   for (int i = 0; i < 10000; ++i)
     tallies["negative radii"].check(
         {position(rng), position(rng), radius(rng), position(rng), position(rng), radius(rng)});
+}
+
+TEST(sign_filter, its_one_sided_forms_give_the_same_decisions_on_every_regime_and_at_the_threshold) {
+  // certainly_disjoint_of_squares and certainly_intersecting_of_squares are the filter's two decided answers in
+  // fewer operations (the pair lists' broad phase uses them). They must agree with sign_filter_of_squares
+  // everywhere: far and near pairs, at the threshold itself (q chosen so that |p − q| is the bound, give or
+  // take an ulp), zeros, subnormals, overflow to +∞, and both absolute terms.
+  std::mt19937_64 rng(20261202);
+  std::uniform_real_distribution<double> unit(0, 1);
+  std::uniform_int_distribution<int> exponent(-1074, 1023);
+  const double specials[] = {0.0, 0x1p-1074, 0x1p-1022, 1.0, 0x1p511, 0x1.fffffffffffffp1023,
+                             std::numeric_limits<double>::infinity()};
+  std::vector<std::pair<double, double>> cases;  // (q, s)
+  for (const double q : specials)
+    for (const double s : specials) cases.emplace_back(q, s);
+  int near_threshold = 0;
+  for (int i = 0; i < 200000; ++i) {
+    const double s = std::ldexp(unit(rng) + 0.5, i % 2 ? exponent(rng) / 2 : static_cast<int>(unit(rng) * 40) - 20);
+    const double p = s * s;
+    switch (i % 4) {
+      case 0:  // anywhere
+        cases.emplace_back(std::ldexp(unit(rng), exponent(rng)), s);
+        break;
+      case 1:  // within a few hundred ulps of tangency, either side
+        cases.emplace_back(p * (1 + (unit(rng) - 0.5) * 0x1p-44), s);
+        break;
+      default: {  // q at the threshold p ∓ bound, nudged by up to two ulps
+        const double bound = (p + p) * kRelative + kAbsolute;
+        double q = i % 4 == 2 ? p + bound : p - bound;
+        for (int k = static_cast<int>(unit(rng) * 5) - 2; k != 0; k += k > 0 ? -1 : 1)
+          q = std::nextafter(q, k > 0 ? std::numeric_limits<double>::infinity() : 0.0);
+        cases.emplace_back(q, s);
+        ++near_threshold;
+      }
+    }
+  }
+  int disjoint = 0, intersecting = 0, undecided = 0;
+  for (const auto& [q, s] : cases)
+    for (const double absolute : {kAbsolute, kAbsoluteRescaled}) {
+      const Decision d = sign_filter_of_squares(q, s, absolute);
+      ASSERT_EQ(certainly_disjoint_of_squares(q, s, absolute), d == Decision::disjoint) << "q " << q << ", s " << s;
+      ASSERT_EQ(certainly_intersecting_of_squares(q, s, absolute), d == Decision::intersect)
+          << "q " << q << ", s " << s;
+      disjoint += d == Decision::disjoint;
+      intersecting += d == Decision::intersect;
+      undecided += d == Decision::undecided;
+    }
+  // Every answer occurs often, so the agreement means something on each.
+  EXPECT_GT(disjoint, 50000);
+  EXPECT_GT(intersecting, 50000);
+  EXPECT_GT(undecided, 1000);
+  EXPECT_GT(near_threshold, 90000);
 }
 
 // ── The constants, recomputed from their derivations ────────────────────────────────────────────────────
