@@ -1,6 +1,7 @@
 // The cell grid and the cell order; the conservativeness argument is in broad_phase.hpp.
 #include "impl/broad_phase.hpp"
 
+#include "impl/contacts.hpp"
 #include "impl/predicate.hpp"
 
 #include <algorithm>
@@ -106,8 +107,102 @@ CellGrid::Range CellGrid::neighbourhood(double x, double y, double r, unsigned l
                cell_of_y(outward_upper(y, r), level)};
 }
 
+namespace {
+
+// (key, slot): a total order.
+constexpr auto kBefore = [](const auto& a, const auto& b) {
+  return a.key < b.key || (a.key == b.key && a.slot < b.slot);
+};
+
+// Insertion sort with a budget of moves linear in the list; past it, std::sort.
+template <class Entry>
+void repair(std::vector<Entry>& list) {
+  std::size_t budget = 8 * list.size() + 64;
+  for (std::size_t a = 1; a < list.size(); ++a) {
+    const Entry e = list[a];
+    std::size_t b = a;
+    while (b > 0 && kBefore(e, list[b - 1])) {
+      list[b] = list[b - 1];
+      --b;
+      if (--budget == 0) {
+        list[b] = e;
+        std::sort(list.begin(), list.end(), kBefore);
+        return;
+      }
+    }
+    list[b] = e;
+  }
+}
+
+}  // namespace
+
+void CellOrder::Chunk::split(std::span<const CellKey> keys, std::span<const CellKey> previous, std::size_t begin,
+                             std::size_t end, std::span<const CellKey> splitters, std::size_t part) {
+  for (std::vector<Entry>* list : {&same, &up, &down, &other, &foreign, &incoming}) list->clear();
+  const bool guided = previous.size() == keys.size();
+  // Part c holds the keys k with splitters[c] ≤ k < splitters[c + 1]; the first part has no lower bound and
+  // the last no upper one.
+  const std::size_t parts = splitters.size() - 1;
+  const auto part_of = [&](CellKey k) {
+    return static_cast<std::size_t>(std::upper_bound(splitters.begin() + 1, splitters.end() - 1, k) -
+                                    (splitters.begin() + 1));
+  };
+  for (std::size_t s = begin; s < end; ++s) {
+    const CellKey k = keys[s];
+    Entry e{k, static_cast<std::uint32_t>(s), static_cast<std::uint32_t>(part)};
+    if ((part > 0 && k < splitters[part]) || (part + 1 < parts && k >= splitters[part + 1])) {
+      e.part = static_cast<std::uint32_t>(part_of(k));
+      foreign.push_back(e);
+      continue;
+    }
+    // Split by how far the slot's band moved since `previous`, which was sorted: the slots that kept their
+    // band are in band order, and within a band nearly in (column, row) order (a circle moves by one cell at
+    // most, for most); so are those that moved one band up, and one band down. Each such list needs only
+    // local repair. The band includes the level: a change of level is never a neighbouring band.
+    if (guided) {
+      const CellKey now = CellGrid::band(k), then = CellGrid::band(previous[s]);
+      if (now == then) {
+        same.push_back(e);
+        continue;
+      }
+      if (now == then + 1 && CellGrid::level(k) == CellGrid::level(previous[s])) {
+        up.push_back(e);
+        continue;
+      }
+      if (now + 1 == then && CellGrid::level(k) == CellGrid::level(previous[s])) {
+        down.push_back(e);
+        continue;
+      }
+    }
+    other.push_back(e);
+  }
+}
+
+void CellOrder::Chunk::merge_into(std::span<std::uint32_t> out) {
+  repair(same);
+  repair(up);
+  repair(down);
+  std::sort(other.begin(), other.end(), kBefore);
+  std::sort(incoming.begin(), incoming.end(), kBefore);
+  // Merge the small lists first, then the large one once.
+  spare.resize(up.size() + down.size());
+  std::merge(up.begin(), up.end(), down.begin(), down.end(), spare.begin(), kBefore);
+  merged.resize(spare.size() + other.size());
+  std::merge(spare.begin(), spare.end(), other.begin(), other.end(), merged.begin(), kBefore);
+  if (!incoming.empty()) {
+    spare.resize(merged.size() + incoming.size());
+    std::merge(merged.begin(), merged.end(), incoming.begin(), incoming.end(), spare.begin(), kBefore);
+    merged.swap(spare);
+  }
+  std::size_t a = 0, b = 0, at = 0;
+  while (a < same.size() && b < merged.size())
+    out[at++] = kBefore(merged[b], same[a]) ? merged[b++].slot : same[a++].slot;
+  while (a < same.size()) out[at++] = same[a++].slot;
+  while (b < merged.size()) out[at++] = merged[b++].slot;
+}
+
 bool CellOrder::sort(std::span<const CellKey> keys, std::span<const CellKey> previous,
-                     std::vector<std::uint32_t>& order) {
+                     std::vector<std::uint32_t>& order, unsigned threads) {
   const std::size_t n = keys.size();
   if (n > std::numeric_limits<std::uint32_t>::max())
     throw std::invalid_argument("CellOrder::sort: more than 2^32 - 1 slots");
@@ -117,69 +212,29 @@ bool CellOrder::sort(std::span<const CellKey> keys, std::span<const CellKey> pre
     for (std::size_t s = 0; s < n; ++s) order[s] = static_cast<std::uint32_t>(s);
     return true;
   }
-  const auto before = [](const Entry& a, const Entry& b) { return a.key < b.key || (a.key == b.key && a.slot < b.slot); };
-  // Split by how far each slot's band moved since `previous`, which was sorted: the slots that kept their band
-  // are in band order, and within a band nearly in (column, row) order (a circle moves by one cell at most,
-  // for most); so are those that moved one band up, and one band down. Each such list needs only local
-  // repair.
-  same_.clear();
-  up_.clear();
-  down_.clear();
-  other_.clear();
-  const bool guided = previous.size() == n;
-  for (std::size_t s = 0; s < n; ++s) {
-    const Entry e{keys[s], static_cast<std::uint32_t>(s)};
-    if (guided) {
-      // The band with the level above it: a change of level is never a neighbouring band.
-      const CellKey now = CellGrid::band(keys[s]), then = CellGrid::band(previous[s]);
-      if (now == then) {
-        same_.push_back(e);
-        continue;
-      }
-      if (now == then + 1 && CellGrid::level(keys[s]) == CellGrid::level(previous[s])) {
-        up_.push_back(e);
-        continue;
-      }
-      if (now + 1 == then && CellGrid::level(keys[s]) == CellGrid::level(previous[s])) {
-        down_.push_back(e);
-        continue;
-      }
-    }
-    other_.push_back(e);
+  // Parts need the previous keys, sorted, as splitters: without them, one chunk does it all.
+  const std::size_t chunks = previous.size() == n ? chunk_count(n, threads) : 1;
+  chunks_.resize(chunks);
+  std::vector<CellKey> splitters(chunks + 1, 0);
+  for (std::size_t c = 1; c < chunks; ++c) splitters[c] = previous[chunk_begin(n, chunks, c)];
+  for_each_chunk(chunks, threads, [&](std::size_t c) {
+    chunks_[c].split(keys, previous, chunk_begin(n, chunks, c), chunk_begin(n, chunks, c + 1), splitters, c);
+  });
+  // Each part collects what the other chunks handed it, then its range of the output is known.
+  for_each_chunk(chunks, threads, [&](std::size_t part) {
+    for (std::size_t c = 0; c < chunks; ++c)
+      if (c != part)
+        for (const Entry& e : chunks_[c].foreign)
+          if (e.part == part) chunks_[part].incoming.push_back(e);
+  });
+  std::vector<std::size_t> begin(chunks + 1, 0);
+  for (std::size_t c = 0; c < chunks; ++c) {
+    const Chunk& k = chunks_[c];
+    begin[c + 1] = begin[c] + k.same.size() + k.up.size() + k.down.size() + k.other.size() + k.incoming.size();
   }
-  // Insertion sort with a budget of moves linear in the list; past it, std::sort.
-  const auto repair = [&before](std::vector<Entry>& list) {
-    std::size_t budget = 8 * list.size() + 64;
-    for (std::size_t a = 1; a < list.size(); ++a) {
-      const Entry e = list[a];
-      std::size_t b = a;
-      while (b > 0 && before(e, list[b - 1])) {
-        list[b] = list[b - 1];
-        --b;
-        if (--budget == 0) {
-          list[b] = e;
-          std::sort(list.begin(), list.end(), before);
-          return;
-        }
-      }
-      list[b] = e;
-    }
-  };
-  repair(same_);
-  repair(up_);
-  repair(down_);
-  std::sort(other_.begin(), other_.end(), before);
-  // Merge the small lists first, then the large one once. (key, slot) is a total order, so the result does
-  // not depend on how the lists were formed.
-  spare_.resize(up_.size() + down_.size());
-  std::merge(up_.begin(), up_.end(), down_.begin(), down_.end(), spare_.begin(), before);
-  merged_.resize(spare_.size() + other_.size());
-  std::merge(spare_.begin(), spare_.end(), other_.begin(), other_.end(), merged_.begin(), before);
-  std::size_t a = 0, b = 0, out = 0;
-  while (a < same_.size() && b < merged_.size())
-    order[out++] = before(merged_[b], same_[a]) ? merged_[b++].slot : same_[a++].slot;
-  while (a < same_.size()) order[out++] = same_[a++].slot;
-  while (b < merged_.size()) order[out++] = merged_[b++].slot;
+  for_each_chunk(chunks, threads, [&](std::size_t c) {
+    chunks_[c].merge_into(std::span<std::uint32_t>(order).subspan(begin[c], begin[c + 1] - begin[c]));
+  });
   return false;
 }
 

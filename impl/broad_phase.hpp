@@ -160,21 +160,41 @@ class CellGrid {
 
 // ── The order ─────────────────────────────────────────────────────────────────────────────────────────
 
-// The permutation that sorts keys, computed in linear time when keys are nearly sorted already.
+// The permutation that sorts keys, computed in linear time when keys are nearly sorted already, on up to
+// `threads` threads.
+//
+// In parallel, slots are split into chunks, and the output into parts by the previous keys at the chunks'
+// first slots (the previous keys are sorted, so part c is the key range that chunk c held): every key of part
+// c is less than every key of part c + 1. Each chunk sorts the slots whose key stayed in its own part (most
+// of them; the guided repair below) and hands the others to their parts; each part then merges what it kept
+// with what it was handed and writes its range of the output. (key, slot) is a total order, so the result is
+// the same for every thread count.
 class CellOrder {
  public:
   // Sets `order` to the slots of `keys` in ascending key order (ties in slot order): keys[order[0]] ≤
   // keys[order[1]] ≤ …. `previous` holds the keys the same slots had when they were last sorted (ascending
   // by slot), or is empty; it only guides the work, never the result. Returns true when `keys` were sorted
   // already (`order` is then the identity).
-  bool sort(std::span<const CellKey> keys, std::span<const CellKey> previous, std::vector<std::uint32_t>& order);
+  bool sort(std::span<const CellKey> keys, std::span<const CellKey> previous, std::vector<std::uint32_t>& order,
+            unsigned threads = 1);
 
  private:
   struct Entry {
     CellKey key;
     std::uint32_t slot;
+    std::uint32_t part;  // the part of the output it belongs to
   };
-  std::vector<Entry> same_, up_, down_, other_, merged_, spare_;
+  // One chunk's work: its slots split by how far their band moved, each list repaired, then merged.
+  struct Chunk {
+    std::vector<Entry> same, up, down, other, foreign, merged, spare, incoming;
+    // Splits slots [begin, end) of keys whose key is in [low, high) (this chunk's part) by how far their band
+    // moved since `previous` (guided, or all in `other`); the rest go to `foreign`, marked with their part.
+    void split(std::span<const CellKey> keys, std::span<const CellKey> previous, std::size_t begin,
+               std::size_t end, std::span<const CellKey> splitters, std::size_t part);
+    // Sorts what split() kept with `incoming` (entries handed over by other chunks) into out[0, size).
+    void merge_into(std::span<std::uint32_t> out);
+  };
+  std::vector<Chunk> chunks_;
 };
 
 // ── The query ─────────────────────────────────────────────────────────────────────────────────────────

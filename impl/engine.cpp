@@ -265,7 +265,7 @@ void BasicEngine<A>::rebuild() {
   next_key_.resize(n);
   locate(grid_, threads_, now_.px, now_.py, inflated_, next_key_);
   if (now_.key.size() != n) now_.key.clear();  // the first layout: no previous order to guide the sort
-  const bool sorted = order_.sort(next_key_, now_.key, permutation_);
+  const bool sorted = order_.sort(next_key_, now_.key, permutation_, threads_);
   std::swap(now_.key, next_key_);
   if (!sorted) {
     // One gather of every field into cell order. least_ is the identity between steps, so it stays.

@@ -557,7 +557,7 @@ void ExactEngine::rebuild(Columns<Int>& s) {
   next_key_.resize(n);
   locate(grid_, threads_, a.x, a.y, inflated_, next_key_);
   if (key_.size() != n) key_.clear();  // the first layout: no previous order to guide the sort
-  const bool sorted = order_.sort(next_key_, key_, permutation_);
+  const bool sorted = order_.sort(next_key_, key_, permutation_, threads_);
   std::swap(key_, next_key_);
   if (!sorted) {
     // One gather of every slot field into cell order. least_ is the identity between steps, so it stays.

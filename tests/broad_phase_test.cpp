@@ -2,6 +2,7 @@
 // than only through the engines: every pair of neighbouring cells is visited exactly once, from the earlier
 // slot, across band boundaries and levels; and CellOrder's guided re-sort equals a plain sort.
 #include "impl/broad_phase.hpp"
+#include "impl/contacts.hpp"
 
 #include <gtest/gtest.h>
 
@@ -144,6 +145,59 @@ TEST(broad_phase, the_guided_re_sort_equals_a_plain_sort_after_moves_within_and_
   std::iota(plain.begin(), plain.end(), 0u);
   std::stable_sort(plain.begin(), plain.end(), [&](std::uint32_t a, std::uint32_t b) { return moved[a] < moved[b]; });
   EXPECT_EQ(guided, plain);
+}
+
+TEST(broad_phase, the_re_sort_in_parts_on_several_threads_equals_a_plain_sort) {
+  // 40,000 slots, so that two and three threads split them into chunks (kParallelFrom), whose parts are the
+  // key ranges the previous keys held. Keys move within their band, across bands, far (some leave their part
+  // for any other), and many repeat the key at a part's boundary, which must go to one part only.
+  std::mt19937_64 random(12);
+  const std::size_t n = 40000;
+  std::vector<CellKey> previous(n);
+  for (std::size_t t = 0; t < n; ++t)
+    previous[t] = G::pack(0, static_cast<std::uint32_t>(random() % 400), static_cast<std::uint32_t>(random() % 400));
+  std::sort(previous.begin(), previous.end());
+  std::uniform_int_distribution<int> move(-12, 12), kind(0, 19);
+  for (const unsigned threads : {1u, 2u, 3u}) {
+    const std::size_t chunks = chunk_count(n, threads);
+    std::vector<CellKey> moved(n);
+    std::size_t crossed = 0;
+    for (std::size_t t = 0; t < n; ++t) {
+      const CellKey k = previous[t];
+      const auto shift = [&](std::uint32_t c) {
+        return static_cast<std::uint32_t>(std::max(0, static_cast<int>(c) + move(random)));
+      };
+      switch (kind(random)) {
+        case 0:  // anywhere
+          moved[t] = G::pack(0, static_cast<std::uint32_t>(random() % 400), static_cast<std::uint32_t>(random() % 400));
+          break;
+        case 1:  // onto the first key of a part
+          moved[t] = previous[chunk_begin(n, chunks, random() % chunks)];
+          break;
+        default:
+          moved[t] = G::pack(0, shift(G::cell_y(k)), shift(G::cell_x(k)));
+      }
+      // Its part: the chunk whose first previous key is the last one at or below it.
+      std::size_t part = 0;
+      while (part + 1 < chunks && previous[chunk_begin(n, chunks, part + 1)] <= moved[t]) ++part;
+      crossed += part != t * chunks / n;
+    }
+    std::vector<std::uint32_t> parted, plain(n);
+    CellOrder order;
+    EXPECT_FALSE(order.sort(moved, previous, parted, threads));
+    std::iota(plain.begin(), plain.end(), 0u);
+    std::stable_sort(plain.begin(), plain.end(), [&](std::uint32_t a, std::uint32_t b) { return moved[a] < moved[b]; });
+    EXPECT_EQ(parted, plain) << threads << " threads";
+    if (threads > 1) {
+      EXPECT_GT(chunks, 1u);
+      EXPECT_GT(crossed, n / 50) << threads << " threads: too few keys change part to test the hand-over";
+    }
+    // The same CellOrder again, on the result's own order: nothing left over from the last call.
+    std::vector<CellKey> again(n);
+    for (std::size_t t = 0; t < n; ++t) again[t] = moved[parted[t]];
+    std::vector<std::uint32_t> identity;
+    EXPECT_TRUE(order.sort(again, moved, identity, threads));
+  }
 }
 
 }  // namespace
