@@ -143,12 +143,19 @@ int main(int argc, char** argv) {
   double timeout = 10;
   std::uint64_t only_case = 0;
   CLI::App* conform = app.add_subcommand(
-      "conform", "Check an engine (--engine) or any program speaking the step protocol (--exec) against the oracle");
+      "conform",
+      "Check an engine (--engine) or any program speaking the step protocol (--exec) against the oracle; exits 0 "
+      "(conforms), 1 (a counterexample) or 2 (cannot check) (docs/conform.md)");
   add_engine_options(conform, engine_name, threads);
   conform->add_option("--exec", exec, "Check this program instead, run as /bin/sh -c COMMAND (docs/protocol.md)");
   conform->add_option("--level", level, "exact (the nearest double), faithful (1 ulp) or ulps:K; decisions always exact")
       ->capture_default_str();
-  conform->add_option("--cases", conform_options.cases, "Worlds to check")->capture_default_str();
+  // --cases and --case up to 2^63 - 1, as the counts of run and vectors: CLI11 reads "-1" as 2^64 - 1 (strtoull),
+  // which as --cases would run for ever and as --case would check no case at all (I + 1 wraps to 0) and conform.
+  constexpr std::uint64_t kMaxCases = std::numeric_limits<std::int64_t>::max();
+  conform->add_option("--cases", conform_options.cases, "Worlds to check")
+      ->capture_default_str()
+      ->check(CLI::Range(std::uint64_t{0}, kMaxCases));
   conform->add_option("--seed", conform_options.seed, "Seed of the worlds (default: a random one, printed)");
   conform->add_option("--steps", conform_options.steps, "Steps chained per world, the candidate fed its own answers")
       ->capture_default_str()
@@ -166,7 +173,8 @@ int main(int argc, char** argv) {
   conform->add_option("--timeout", timeout, "Seconds to wait for each answer")
       ->capture_default_str()
       ->check(CLI::Range(0.001, 3600.0));
-  CLI::Option* case_option = conform->add_option("--case", only_case, "Check only this case (to replay a counterexample)");
+  CLI::Option* case_option = conform->add_option("--case", only_case, "Check only this case (to replay a counterexample)")
+                                  ->check(CLI::Range(std::uint64_t{0}, kMaxCases));
   std::string report_file, junit_file;
   conform->add_option("--report", report_file, "Also write the verdict as JSON to FILE (docs/conform.md, Reports for CI)");
   conform->add_option("--junit", junit_file, "Also write the verdict as JUnit XML to FILE, a test case per family");
@@ -208,7 +216,9 @@ int main(int argc, char** argv) {
 
   std::string trace_file, trace_engine = "double";
   CLI::App* check_trace = app.add_subcommand(
-      "check-trace", "Check a trace recorded by any implementation step by step against the spec (docs/vectors.md)");
+      "check-trace",
+      "Check a trace recorded by any implementation step by step against the spec; exits 0 (it agrees), 1 (a world "
+      "differs) or 2 (not a trace) (docs/vectors.md)");
   // No CLI::ExistingFile: a missing file is reported by the trace reader, as every other bad trace is.
   check_trace->add_option("trace", trace_file, "The trace: JSON Lines, one {\"step\": t, \"circles\": [...]} per world")
       ->required();
@@ -253,6 +263,11 @@ int main(int argc, char** argv) {
       }
       if (!exec.empty() && conform->count("--engine") > 0) {
         std::cerr << "circles conform: --engine and --exec exclude each other: check one candidate at a time\n";
+        return 2;
+      }
+      if (!exec.empty() && conform->count("--threads") > 0) {
+        std::cerr << "circles conform: --threads sets the threads of an --engine; a program given with --exec runs "
+                     "its own\n";
         return 2;
       }
       if (*case_option) conform_options.only_case = only_case;

@@ -103,6 +103,35 @@ int status_rank(const std::string& status) {
   return static_cast<int>(std::find(std::begin(order), std::end(order), status) - std::begin(order));
 }
 
+// The keys merge_reports reads, each of the type conform writes it, so that a report cut short or edited by hand
+// is refused naming its file and key, rather than ending the program with a JSON library's exception.
+void check_report(const nlohmann::json& r, const std::string& name) {
+  const auto refuse = [&](const std::string& key, const std::string& expected) {
+    throw ReportError(name + ": \"" + key + "\": expected " + expected + ", found " +
+                      (r.contains(key) ? formats::shortened_token(r.at(key).dump()) : std::string("nothing")));
+  };
+  const auto has = [&](const char* key, bool (nlohmann::json::*is)() const noexcept) {
+    return r.contains(key) && (r.at(key).*is)();
+  };
+  for (const char* key : {"candidate", "level", "profile", "shard", "verdict"})
+    if (!has(key, &nlohmann::json::is_string)) refuse(key, "a string");
+  for (const char* key : {"seed", "steps", "cases", "skipped", "cut_short", "replayed"})
+    if (!has(key, &nlohmann::json::is_number_unsigned)) refuse(key, "an integer >= 0");
+  if (!has("elapsed_seconds", &nlohmann::json::is_number)) refuse("elapsed_seconds", "a number");
+  const std::string verdict = r.at("verdict");
+  if (verdict != "conforms" && verdict != "does not conform" && verdict != "cannot check")
+    refuse("verdict", "\"conforms\", \"does not conform\" or \"cannot check\"");
+  if (!has("error", &nlohmann::json::is_null) && !has("error", &nlohmann::json::is_string)) refuse("error", "null or a string");
+  if (!has("families", &nlohmann::json::is_object) ||
+      std::any_of(r.at("families").begin(), r.at("families").end(), [](const nlohmann::json& n) { return !n.is_number_unsigned(); }))
+    refuse("families", "an object of case counts, integers >= 0");
+  if (!has("family_status", &nlohmann::json::is_object)) refuse("family_status", "an object of statuses");
+  const bool no_counterexample = has("counterexample", &nlohmann::json::is_null);
+  if (!no_counterexample && !(has("counterexample", &nlohmann::json::is_object) && r.at("counterexample").contains("case") &&
+                              (r.at("counterexample").at("case").is_null() || r.at("counterexample").at("case").is_number_unsigned())))
+    refuse("counterexample", "null or an object whose \"case\" is null or an integer >= 0");
+}
+
 }  // namespace
 
 std::string json_report(const Verdict& v, const std::string& text) {
@@ -192,8 +221,9 @@ std::string merge_reports(const std::vector<std::string>& texts, const std::vect
     } catch (const nlohmann::json::exception& e) {
       throw ReportError(names[k] + ": malformed JSON: " + e.what());
     }
-    if (!r.is_object() || r.value("format", "") != kFormat)
+    if (!r.is_object() || !r.contains("format") || r["format"] != kFormat)
       throw ReportError(names[k] + ": not a report of circles conform (\"format\": \"" + kFormat + "\")");
+    check_report(r, names[k]);
     reports.push_back(std::move(r));
   }
   const nlohmann::json& first = reports.front();

@@ -73,6 +73,15 @@ using properties::Chain;
 using Failure = properties::ChainFailure;
 using Ending = Chain::Ending;
 
+// Whether two failures received the same kind of wrong value: both NaN, the same infinity, or both finite. Shrinking
+// and simplifying keep a failure's kind, so that a candidate that answers NaN on one world and a finite wrong
+// value on a simpler one is shown with its NaN, the fault it was caught by, rather than slipping to another.
+bool same_kind(const Failure& a, const Failure& b) {
+  const double x = a.difference.actual, y = b.difference.actual;
+  if (std::isnan(x) || std::isnan(y)) return std::isnan(x) && std::isnan(y);
+  return std::isfinite(x) == std::isfinite(y) && (std::isfinite(x) || x == y);
+}
+
 // The most cases conform asks the candidate about in one Checker::run_all, which sends every request whose
 // world is known before reading their answers (ProcessCandidate also bounds the bytes in flight), so that they
 // share one round trip through the pipes. A batch of requests ends sooner, at a case that chains another step:
@@ -392,7 +401,8 @@ class Run {
     Counterexample counterexample;
     counterexample.shrink_path = {world.value()};
     counterexample.circles_before = world.value().size();
-    // Shrink: take the first simpler world that still fails, until none does (or the budget is spent).
+    // Shrink: take the first simpler world that still fails with the same kind of value (same_kind), until none
+    // does (or the budget is spent).
     int queries = 0;
     for (bool progress = true; progress && queries < kMaxShrinkQueries;) {
       progress = false;
@@ -408,7 +418,7 @@ class Run {
           // show the wrong answer being shrunk; the next is asked of the program started afresh.
           continue;
         }
-        if (f) {
+        if (f && same_kind(*f, failure)) {
           world = *next;
           failure = std::move(*f);
           counterexample.shrink_path.push_back(world.value());
@@ -455,8 +465,10 @@ class Run {
               continue;
             }
             // The same failure, made simpler: at the same step, in the same field (a stateful candidate may
-            // fail otherwise on a world that happens to equal one of its earlier answers).
-            if (!still || still->step != failure.step || still->difference.field != failure.difference.field) continue;
+            // fail otherwise on a world that happens to equal one of its earlier answers), of the same kind.
+            if (!still || still->step != failure.step || still->difference.field != failure.difference.field ||
+                !same_kind(*still, failure))
+              continue;
             world = std::move(simpler);
             failure = std::move(*still);
             counterexample.shrink_path.push_back(world);

@@ -20,6 +20,11 @@ namespace {
 
 constexpr std::size_t kFields = 5;  // [px, py, vx, vy, r]
 
+// What a strict line's message says after a field's token NaN, Infinity or -Infinity.
+constexpr const char* kNotFinite =
+    " is not finite: a request or trace holds finite numbers (only an answer to conform may hold NaN, Infinity or "
+    "-Infinity)";
+
 // {"id": N, "circles": [[px, py, vx, vy, r], ...]}, for messages.
 std::string line_shape(std::string_view counter) {
   return "{\"" + std::string(counter) + "\": N, \"circles\": [[px, py, vx, vy, r], ...]}";
@@ -60,7 +65,11 @@ bool json_number_token(std::string_view s) {
   return i == s.size();
 }
 
-std::vector<Blanked> blank_non_finite(std::string& text) {
+// Which tokens blank_non_finite blanks: every non-finite one (reading an answer), or only NaN, Infinity and
+// -Infinity (naming them in a strict line's message; a number beyond the range has its own, the parser's 406).
+enum class Blank { all, named_tokens };
+
+std::vector<Blanked> blank_non_finite(std::string& text, Blank which = Blank::all) {
   const auto in_run = [](char c) {
     return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '+' || c == '-' ||
            c == '.';
@@ -83,7 +92,7 @@ std::vector<Blanked> blank_non_finite(std::string& text) {
     const std::string run = text.substr(i, end - i);
     const bool number_like = run[0] == '-' || (run[0] >= '0' && run[0] <= '9');
     std::optional<double> value = json_number::non_finite_token(run);
-    if (!value && json_number_token(run)) {
+    if (!value && which == Blank::all && json_number_token(run)) {
       // glibc's strtod: the nearest double, ±HUGE_VAL (infinity) beyond the range, as nlohmann's reader uses it.
       if (const double x = std::strtod(run.c_str(), nullptr); std::isinf(x)) value = x;
     }
@@ -213,6 +222,8 @@ class Reader {
   bool non_finite(const Blanked& b) {
     if (skipped()) return true;
     if (state_ != State::circle || field_ == kFields) return unexpected(b.token);
+    if (reading_ == Reading::strict)
+      return fail(field_name() + ": " + b.token + kNotFinite);
     return field(b.value);
   }
 
@@ -316,8 +327,19 @@ Line parse_line(std::string_view text, std::size_t line_number, std::string_view
     text = blanked_text;
   }
   Reader reader(counter, reading, std::move(blanked));
-  if (!nlohmann::json::sax_parse(text, &reader)) throw ProtocolError(line_number, reader.error.value_or("unreadable"));
-  return std::move(reader.line);
+  if (nlohmann::json::sax_parse(text, &reader)) return std::move(reader.line);
+  // Read strictly, a token NaN, Infinity or -Infinity is a syntax error to the JSON parser, whose message names
+  // neither the token nor its field ("invalid literal; last read: '[[N'"). Only on that failure path, so at no
+  // cost to a line that reads: read again with those tokens blanked, so that the first is named where it stands
+  // (Reader::non_finite), unless a fault before it comes first, which is then reported as before.
+  if (reading == Reading::strict) {
+    std::string again(text);
+    if (std::vector<Blanked> tokens = blank_non_finite(again, Blank::named_tokens); !tokens.empty()) {
+      Reader named(counter, reading, std::move(tokens));
+      if (!nlohmann::json::sax_parse(again, &named)) throw ProtocolError(line_number, named.error.value_or("unreadable"));
+    }
+  }
+  throw ProtocolError(line_number, reader.error.value_or("unreadable"));
 }
 
 std::string shortened_token(std::string_view token) {

@@ -32,8 +32,11 @@ std::uint64_t ulps_between(double a, double b) {
                   : static_cast<std::uint64_t>(rb) - static_cast<std::uint64_t>(ra);
 }
 
-// Which decision of circle k's step differs: its contacts by (3), exactly, on the input doubles.
-std::string decision(const Circles& in, std::size_t k, const Circles& expected, const Circles& actual) {
+// Which decision of circle k's step differs (at `field`, the first that does): its contacts by (3), exactly, on
+// the input doubles. A radius is judged only when the position and velocity before it are right, and no decision
+// touches it.
+std::string decision(const Circles& in, std::size_t k, int field, const Circles& expected, const Circles& actual) {
+  if (field == 4) return "none: the position and velocity are right, but the radius changed, which no step does";
   const auto same_velocity = [](const std::array<double, 5>& a, const std::array<double, 5>& b) {
     return a[2] == b[2] && a[3] == b[3];
   };
@@ -127,7 +130,7 @@ std::optional<Difference> compare(const Circles& input, const Circles& expected,
       // Velocities and radii are copied, never computed: exact at every level. Positions within the level.
       const bool position = f < 2;
       const bool equal = position ? std::isfinite(a) && ulps_between(e, a) <= level.ulps : e == a;
-      if (!equal) return Difference{k, f, e, a, decision(input, k, expected, actual)};
+      if (!equal) return Difference{k, f, e, a, decision(input, k, f, expected, actual)};
     }
   return std::nullopt;
 }

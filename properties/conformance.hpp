@@ -48,7 +48,9 @@ struct Difference {
   int field;  // 0 px, 1 py, 2 vx, 3 vy, 4 r
   double expected, actual;
   // Which decision differs: "intersect (3): circle 0 touches circle 1 but kept its own velocity", "the
-  // choice of e (8): …", or "none: the velocity is right, the position is not the nearest double".
+  // choice of e (8): …", "none: the velocity is right, the position is not the nearest double", or, for a
+  // radius (which no step changes), "none: the position and velocity are right, but the radius changed, which no
+  // step does".
   std::string decision;
 };
 std::optional<Difference> compare(const Circles& input, const Circles& expected, const Circles& actual, Level level);

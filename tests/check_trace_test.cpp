@@ -305,15 +305,30 @@ TEST(check_trace, an_empty_or_blank_file_exits_2_as_empty) {
   }
 }
 
+// A trace is judged as conform judges an answer: -0 and +0 are one value, and a radius that changed is no
+// decision, so the message does not blame a position that is right.
+TEST(check_trace, reads_minus_0_as_plus_0_and_names_a_changed_radius_as_no_decision) {
+  TempDir dir;
+  const std::string w_0 = "{\"step\":0,\"circles\":[[0.0,0.0,60.0,0.0,1.0]]}\n";
+  EXPECT_EQ(command(dir.write("z.jsonl", w_0 + "{\"step\":1,\"circles\":[[1.0,-0.0,60.0,-0.0,1.0]]}\n")).code, 0);
+  const std::string path = dir.write("r.jsonl", w_0 + "{\"step\":1,\"circles\":[[1.0,0.0,60.0,0.0,2.0]]}\n");
+  const Outcome o = command(path);
+  EXPECT_EQ(o.code, 1);
+  EXPECT_TRUE(o.out.starts_with("circles check-trace: " + path + ":2: step 1 differs from the correctly rounded step "
+                                "of line 1: circle 0, field r: expected 1.0 (0x1p+0), actual 2.0 (0x1p+1)\n  which "
+                                "decision: none: the position and velocity are right, but the radius changed, which "
+                                "no step does\n"))
+      << o.out;
+}
+
 TEST(trace_reader, names_the_line_and_reason_of_a_malformed_line) {
   EXPECT_EQ(read_error("{\"step\":0,\"circles\":[]}\n{\"step\":1,\"circles\":[]}\n{\"step\":2,\"circles\":[[0,0,0,0]]}\n"),
             "t.jsonl:3: circle 0: expected 5 numbers [px, py, vx, vy, r], found 4");
   EXPECT_EQ(read_error("{\"step\":0,\"circles\":[[0,0,0,0,-1]]}\n"),
             "t.jsonl:1: circle 0, field r: radius -1 is negative (r >= 0, the resolved profile) (not an element of C)");
-  // Column 23 is the N: 20 bytes of {"step":0,"circles": and two brackets before it.
   EXPECT_EQ(read_error("{\"step\":0,\"circles\":[[NaN,0,0,0,1]]}\n"),
-            "t.jsonl:1: malformed JSON at column 23: syntax error while parsing value - invalid literal; last read: "
-            "'\"circles\":[[N'");
+            "t.jsonl:1: circle 0, field px: NaN is not finite: a request or trace holds finite numbers (only an answer "
+            "to conform may hold NaN, Infinity or -Infinity)");
   EXPECT_EQ(read_error("{\"step\":0,\"circles\":[[1e309,0,0,0,1]]}\n"),
             "t.jsonl:1: circle 0, field px: 1e309 is beyond the double range");
   EXPECT_EQ(read_error("{\"id\":0,\"circles\":[]}\n"),

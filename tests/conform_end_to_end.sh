@@ -100,6 +100,51 @@ PY
   grep -q "^circles conform: --report $dir/no/such/r.json: cannot create " "$dir/err" || fail "$(cat "$dir/err")"
   [ ! -e "$dir/no" ] || fail "something was written"
   ;;
+judges_nan_infinity_and_signed_zeros_in_every_field_and_step)
+  # tests/odd_token_candidate.py writes NaN, Infinity, -Infinity or 1e400 in each field of circle 0, in every
+  # answer or only at the second step of --steps 2: a counterexample, exit 1, naming the field, the expected value
+  # and the one received, in the printed report and in --report; and -0.0 for 0.0 in every field is right, exit 0.
+  odd="python3 $source_dir/tests/odd_token_candidate.py"
+  for when in every even; do
+    steps=1
+    [ $when = even ] && steps=2
+    for field in px py vx vy r; do
+      case $field in
+      px | py) decision="none: the velocity is right, the position is not the nearest double" ;;
+      vx | vy) decision="intersect (3): circle 0 touches no circle, yet its velocity changed" ;;
+      r) decision="none: the position and velocity are right, but the radius changed, which no step does" ;;
+      esac
+      tokens="NaN Infinity -Infinity 1e400"
+      [ $when = even ] && tokens=NaN
+      for token in $tokens; do
+        received=$token
+        [ "$token" = 1e400 ] && received=Infinity
+        run_conform 1 --seed 1 --cases 17 --steps $steps --exec "$odd $field $token $when" --report "$dir/r.json"
+        [ "$(sed -n 3,4p "$dir/out")" = "  step $steps of $steps, circle 0, field $field: expected 0.0 (0x0p+0), got $received
+  which decision: $decision" ] || fail "$field $token $when: $(cat "$dir/out")"
+        python3 -c "import json, sys; d = json.load(open(sys.argv[1]))['counterexample']['difference']
+assert (d['field'], d['expected'], d['received']) == (sys.argv[2], 0.0, sys.argv[3]), d" "$dir/r.json" $field $received ||
+          fail "$field $token $when: the report says otherwise"
+      done
+      run_conform 0 --seed 1 --cases 17 --steps $steps --exec "$odd $field -0.0 $when"
+    done
+  done
+  # A NaN counterexample stored in the corpus and replayed keeps its NaN.
+  run_conform 1 --seed 1 --cases 17 --save "$dir/corpus" --exec "$odd py NaN every"
+  run_conform 1 --cases 0 --save "$dir/corpus" --exec "$odd py NaN every"
+  grep -q "^  step 1 of 1, circle 0, field py: expected 0.0 (0x0p+0), got NaN$" "$dir/out" || fail "$(cat "$dir/out")"
+  ;;
+exits_2_for_a_count_beyond_2_63_or_threads_with_a_program)
+  # CLI11 reads "-1" as 2^64 - 1: as --cases it would run for ever, as --case check nothing (I + 1 wraps) and
+  # conform. And --threads is an engine's: a program given with --exec runs its own.
+  run_conform 2 --cases -1 --engine double
+  grep -q "^--cases: Value -1 not in range 0 to 9223372036854775807$" "$dir/err" || fail "$(cat "$dir/err")"
+  run_conform 2 --case 18446744073709551615 --engine double
+  grep -q "^--case: Value 18446744073709551615 not in range 0 to 9223372036854775807$" "$dir/err" || fail "$(cat "$dir/err")"
+  run_conform 2 --threads 2 --exec "python3 $source_dir/examples/python/step.py"
+  [ "$(cat "$dir/err")" = "circles conform: --threads sets the threads of an --engine; a program given with --exec runs its own" ] ||
+    fail "unexpected message: $(cat "$dir/err")"
+  ;;
 keeps_going_and_gates_on_an_expectation_file)
   # The naive example's two mistakes (hypot distance, p + v*(1/60)) reach every family but tangent-after-step
   # and signed-zeros in seed 1's 1000 cases: on their worlds there its answers are the nearest doubles.

@@ -163,6 +163,54 @@ TEST(conform, compares_positions_within_the_level_and_decisions_exactly) {
             "the choice of e (8): circle 0 took the velocity of circle 1, a contact but not the least one");
 }
 
+// NaN and the infinities differ from every expected value, in every field, at every level: never "equal" from
+// a NaN comparison, nor from the rank of NaN's bits. The difference names the field and holds the value received.
+TEST(conform, judges_nan_and_infinities_in_every_field_as_differences_at_every_level) {
+  const Circles in{{0, 0, 1, 0, 1}, {1, 0, 2, 0, 1}};
+  const Circles expected = spec::resolved_step_rounded(in);
+  for (const double odd : {double{NAN}, -double{NAN}, double{INFINITY}, -double{INFINITY}})
+    for (int field = 0; field < 5; ++field)
+      for (const std::uint64_t ulps : {std::uint64_t{0}, std::uint64_t{1}, std::numeric_limits<std::uint64_t>::max()}) {
+        Circles answer = expected;
+        answer[1][static_cast<std::size_t>(field)] = odd;
+        const auto d = compare(in, expected, answer, Level{ulps});
+        ASSERT_TRUE(d) << odd << " in field " << field << " at ulps " << ulps;
+        EXPECT_EQ(d->circle, 1u);
+        EXPECT_EQ(d->field, field);
+        EXPECT_EQ(d->expected, expected[1][static_cast<std::size_t>(field)]);
+        EXPECT_EQ(std::bit_cast<std::uint64_t>(d->actual), std::bit_cast<std::uint64_t>(odd));
+      }
+}
+
+// −0 and +0 are one value (docs/conform.md, --level): in every field, at every level, either way round.
+TEST(conform, judges_minus_0_and_plus_0_as_one_value_in_every_field_both_ways) {
+  const Circles in{{0, 0, 0, 0, 0}, {-0.0, -0.0, -0.0, -0.0, -0.0}};
+  const Circles expected = spec::resolved_step_rounded(in);
+  for (std::size_t k = 0; k < 2; ++k)
+    for (std::size_t field = 0; field < 5; ++field) {
+      ASSERT_EQ(expected[k][field], 0.0);
+      for (const std::uint64_t ulps : {std::uint64_t{0}, std::uint64_t{1}}) {
+        Circles flipped = expected;
+        flipped[k][field] = std::copysign(0.0, std::signbit(expected[k][field]) ? 1.0 : -1.0);
+        EXPECT_FALSE(compare(in, expected, flipped, Level{ulps})) << "circle " << k << ", field " << field;
+      }
+    }
+}
+
+// A radius is copied by every step: a wrong one is no decision, and the message does not blame the position.
+TEST(conform, names_a_changed_radius_as_no_decision_rather_than_a_wrong_position) {
+  const Circles in{{0, 0, 1, 0, 1}, {10, 0, 2, 0, 1}};
+  const Circles expected = spec::resolved_step_rounded(in);
+  for (const double r : {double{NAN}, double{INFINITY}, 2.0, -1.0}) {
+    Circles answer = expected;
+    answer[0][4] = r;
+    const auto d = compare(in, expected, answer, Level{0});
+    ASSERT_TRUE(d) << r;
+    EXPECT_EQ(properties::field_name(d->field), std::string("r"));
+    EXPECT_EQ(d->decision, "none: the position and velocity are right, but the radius changed, which no step does");
+  }
+}
+
 TEST(conform, the_double_engine_conforms_over_chained_steps) {
   EngineCandidate engine_candidate(engine("double"), 1);
   const Verdict v = check(engine_candidate, Options{{0}, 400, 11, 2, 0, 1, {}});
@@ -574,6 +622,28 @@ TEST(conform, reads_nan_and_infinity_in_an_answer_as_values_and_reports_a_counte
       EXPECT_EQ(c.difference.actual, token == "Infinity" ? INFINITY : -INFINITY);
     }
   }
+}
+
+// Shrinking and simplifying keep the kind of the wrong value: a step that answers NaN for circle 0's px on a
+// world of two or more circles whose circle 0 has px != 0, and one ulp too far on every other world, is shown
+// with its NaN on two circles, not slipped to the simpler one-circle world or px = 0 that fails with a number.
+TEST(conform, keeps_a_nan_answer_through_shrinking_and_simplifying) {
+  FunctionCandidate nan_on_pairs([](const Circles& w) {
+    Circles out = spec::resolved_step_rounded(w);
+    if (!out.empty()) out[0][0] = w.size() >= 2 && w[0][0] != 0 ? NAN : std::nextafter(out[0][0], INFINITY);
+    return out;
+  });
+  Options options;
+  options.seed = 1;
+  const Verdict v = check(nan_on_pairs, options);
+  ASSERT_EQ(v.outcome, Outcome::does_not_conform) << describe(v);
+  const Counterexample& c = *v.counterexample;
+  EXPECT_TRUE(std::isnan(c.difference.actual)) << describe(v) << ", got " << c.difference.actual;
+  EXPECT_TRUE(std::isnan(c.actual[0][0]));
+  EXPECT_EQ(c.input.size(), 2u);
+  EXPECT_NE(c.input[0][0], 0.0);
+  EXPECT_GE(c.shrinks(), 1u);
+  for (const Circles& w : c.shrink_path) EXPECT_TRUE(w.size() >= 2 && w[0][0] != 0) << "a world on the path has no NaN";
 }
 
 // A program that answers one request wrong and then breaks (a line that is not JSON, or an exit) on the next,

@@ -152,13 +152,25 @@ TEST(protocol, rejects_a_line_with_a_wrong_id) {
   EXPECT_EQ(refusal(R"({"id": 1e999, "circles": []})"), R"(line 4: "id": 1e999 is beyond the double range)");
 }
 
+// Named where they stand, as the field they would be, rather than by the JSON parser's "invalid literal"; a fault
+// before the token is still the one reported, and any other bare word is malformed JSON.
 TEST(protocol, rejects_nan_and_infinity_tokens_in_requests_and_traces_which_json_does_not_have) {
-  EXPECT_EQ(refusal(R"({"id":1,"circles":[[NaN,0,0,0,1]]})"),
-            R"(line 4: malformed JSON at column 21: syntax error while parsing value - invalid literal; )"
-            R"(last read: '"circles":[[N')");
-  EXPECT_EQ(refusal(R"({"id":1,"circles":[[0,-Infinity,0,0,1]]})"),
-            R"(line 4: malformed JSON at column 24: syntax error while parsing value - invalid number; )"
-            R"(expected digit after '-'; last read: '-I')");
+  const std::string not_finite = " is not finite: a request or trace holds finite numbers (only an answer to conform "
+                                 "may hold NaN, Infinity or -Infinity)";
+  EXPECT_EQ(refusal(R"({"id":1,"circles":[[NaN,0,0,0,1]]})"), "line 4: circle 0, field px: NaN" + not_finite);
+  EXPECT_EQ(refusal(R"({"id":1,"circles":[[0,0,0,0,1],[0,-Infinity,0,0,1]]})"),
+            "line 4: circle 1, field py: -Infinity" + not_finite);
+  EXPECT_EQ(refusal(R"({"id":1,"circles":[[0,0,0,0,Infinity]]})"), "line 4: circle 0, field r: Infinity" + not_finite);
+  EXPECT_EQ(refusal(R"({"id":NaN,"circles":[]})"),
+            R"(line 4: "id": expected an integer from 0 to 18446744073709551615, found NaN)");
+  EXPECT_EQ(refusal(R"({"id":1,"circles":[[0,0,0,0,1]],"x":NaN})"),
+            R"(line 4: unexpected key "x" (a line has exactly the keys "id" and "circles"))");
+  EXPECT_EQ(refusal(R"({"id":1,"circles":[[0,0,0,0 1,NaN]]})"),
+            "line 4: malformed JSON at column 29: syntax error while parsing array - unexpected number literal; "
+            "expected ']'");
+  EXPECT_EQ(refusal(R"({"id":1,"circles":[[nan,0,0,0,1]]})"),
+            R"(line 4: malformed JSON at column 22: syntax error while parsing value - invalid literal; )"
+            R"(last read: '"circles":[[na')");
 }
 
 // Reading an answer (Reading::answer): the tokens NaN, Infinity and -Infinity are the values they mean, and a

@@ -162,6 +162,32 @@ TEST(report, refuses_to_merge_reports_of_different_runs_or_a_shard_twice) {
   EXPECT_EQ(refusal({one.dump(), one.dump()}), "b.json: shard 0/2 twice");
   EXPECT_EQ(refusal({one.dump(), "{"}).substr(0, 25), "b.json: malformed JSON: [");
   EXPECT_EQ(refusal({one.dump(), "{}"}), "b.json: not a report of circles conform (\"format\": \"circles-conform-report/1\")");
+  EXPECT_EQ(refusal({one.dump(), R"({"format": 1})"}),
+            "b.json: not a report of circles conform (\"format\": \"circles-conform-report/1\")");
+}
+
+// A report cut short or edited by hand is refused naming its file and key, exit 2, never a crash: each key merge
+// reads, of the wrong type or missing.
+TEST(report, refuses_to_merge_a_report_whose_keys_have_the_wrong_type_naming_the_file_and_key) {
+  const nlohmann::json one = json_of(verdict_of(spec::resolved_step_rounded, 0, 2));
+  const auto refusal = [&](const char* key, const nlohmann::json& value) {
+    nlohmann::json other = json_of(verdict_of(spec::resolved_step_rounded, 1, 2));
+    if (value.is_discarded()) other.erase(key);
+    else other[key] = value;
+    const auto e = thrown<ReportError>([&] { merge_reports({one.dump(), other.dump()}, {"a.json", "b.json"}); });
+    return e ? std::string(e->what()) : std::string("nothing thrown");
+  };
+  const nlohmann::json missing = nlohmann::json::value_t::discarded;
+  EXPECT_EQ(refusal("cases", "12"), "b.json: \"cases\": expected an integer >= 0, found \"12\"");
+  EXPECT_EQ(refusal("verdict", missing), "b.json: \"verdict\": expected a string, found nothing");
+  EXPECT_EQ(refusal("verdict", "passed"),
+            "b.json: \"verdict\": expected \"conforms\", \"does not conform\" or \"cannot check\", found \"passed\"");
+  EXPECT_EQ(refusal("families", {{"lattice", "x"}}),
+            "b.json: \"families\": expected an object of case counts, integers >= 0, found {\"lattice\":\"x\"}");
+  EXPECT_EQ(refusal("counterexample", {{"case", "zero"}}),
+            "b.json: \"counterexample\": expected null or an object whose \"case\" is null or an integer >= 0, found "
+            "{\"case\":\"zero\"}");
+  EXPECT_EQ(refusal("elapsed_seconds", nullptr), "b.json: \"elapsed_seconds\": expected a number, found null");
 }
 
 }  // namespace
