@@ -92,7 +92,7 @@ int main(int argc, char** argv) {
   constexpr std::size_t kMaxOracleSteps = 1000000;
   RandomOptions random_options;
   CLI::App* oracle = app.add_subcommand(
-      "oracle", "Run the exact oracle in both profiles on a scene and report what it did (the default)");
+      "oracle", "Run the exact oracle in both profiles on a scene and report what it did (the main job's first part)");
   // No CLI::ExistingFile on the scene of oracle or run: a missing file or a directory is reported by the scene
   // loader, as every other bad scene is (docs/scenes.md).
   CLI::Option* oracle_scene =
