@@ -11,7 +11,9 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -288,8 +290,9 @@ std::ifstream open_scene(const std::string& path) {
   std::error_code ignored;
   if (std::filesystem::is_directory(path, ignored))
     throw SceneError(path + ": cannot read the file: it is a directory");
+  errno = 0;
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw SceneError(path + ": cannot open the file");
+  if (!in) throw SceneError(path + ": cannot open the file: " + (errno ? std::strerror(errno) : "open failed"));
   return in;
 }
 

@@ -85,6 +85,18 @@ run_exits_2_leaving_no_file_when_the_trace_cannot_be_written)
     fail "wrong message: $(cat "$dir/err")"
   [ "$(ls "$dir")" = err ] || fail "files left behind: $(ls "$dir")"
   ;;
+run_and_oracle_exit_2_naming_a_scene_file_that_is_missing_or_a_directory)
+  # The scene loader's own messages (docs/scenes.md), as for every other bad scene, not the option parser's.
+  for command in run oracle; do
+    expect_exit 2 sh -c '"$1" "$2" "$3" >/dev/null 2>"$4"' sh "$circles" "$command" "$dir/none.json" "$dir/err"
+    [ "$(cat "$dir/err")" = "circles: $dir/none.json: cannot open the file: No such file or directory" ] ||
+      fail "$command, a missing file: $(cat "$dir/err")"
+    mkdir -p "$dir/scenes"
+    expect_exit 2 sh -c '"$1" "$2" "$3" >/dev/null 2>"$4"' sh "$circles" "$command" "$dir/scenes" "$dir/err"
+    [ "$(cat "$dir/err")" = "circles: $dir/scenes: cannot read the file: it is a directory" ] ||
+      fail "$command, a directory: $(cat "$dir/err")"
+  done
+  ;;
 run_exits_2_leaving_no_file_when_writing_the_trace_fails_midway)
   # A file size limit of 1 MB or 2 MB (ulimit -f counts blocks of 512 or 1024 bytes, by shell): the first line of
   # 20000 circles is about 2 MB, so a write fails midway, as on a full disk.

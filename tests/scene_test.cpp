@@ -166,7 +166,7 @@ TEST(load_scene, names_a_missing_file) {
   try {
     load_scene("/nonexistent/scene.json");
   } catch (const SceneError& e) {
-    EXPECT_STREQ(e.what(), "/nonexistent/scene.json: cannot open the file");
+    EXPECT_STREQ(e.what(), "/nonexistent/scene.json: cannot open the file: No such file or directory");
   }
 }
 

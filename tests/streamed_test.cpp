@@ -161,7 +161,7 @@ TEST(streamed_scene, loads_a_file_as_load_scene_does_and_refuses_what_is_not_a_f
   const auto directory = thrown<SceneError>([&] { load_scene_world(dir.path.string()); });
   EXPECT_EQ(std::string(directory ? directory->what() : ""), dir.path.string() + ": cannot read the file: it is a directory");
   const auto missing = thrown<SceneError>([&] { load_scene_world(path + ".not"); });
-  EXPECT_EQ(std::string(missing ? missing->what() : ""), path + ".not: cannot open the file");
+  EXPECT_EQ(std::string(missing ? missing->what() : ""), path + ".not: cannot open the file: No such file or directory");
 }
 
 // A trace read with its lines streamed, or read whole: the worlds, or the message.
