@@ -49,8 +49,12 @@ constexpr double kRadiusAbsolute = 0x1p-1074;
 // |v| ≤ vmax·(1 + 2^-50)² + 2^-1073: kSpeedBound's margin (1/60)·2^-45 covers the relative part with the
 // five roundings that follow (step_bound's two, skin_for's, the sum with the padding, none in speed_bound):
 // (1 + 2^-50)²·(1 + 2^-53)^5 < 1 + 2^-48; kDriftAbsolute = 2^-1073 covers the absolute part over 60. The
-// radii are padded by exact::kCentreSpread·e for the approximations' errors. Tests at the edge:
-// tests/exact_engine_test.cpp, "Pairs kept across steps".
+// radii are padded by exact::kCentreSpread·e for the approximations' errors. That padding is slack wherever
+// the centres are doubles (2.5·2^-49 of a circle's largest coordinate; a pair whose gap is 2H·s has
+// |a|∞ + |b|∞ ≥ 2H·s/√2, so at least 2^-48.2 of that gap), so no world shows kSpeedBound's edge here: a
+// speed term short of 1/60 by 2^-47.8 lists the same pairs in every world tried. The tests put the skin and
+// the padding together at their edge instead (two points, one at the origin, are dropped by a speed term
+// short by 2^-47.6): tests/exact_engine_test.cpp, "Pairs kept across steps".
 constexpr auto kForever = std::numeric_limits<std::uint64_t>::max();
 
 template <class Int>

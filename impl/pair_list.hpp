@@ -41,11 +41,21 @@ namespace circles::impl {
 // skin_for computes that bound in doubles with each constant rounded up by enough to cover the at most eight
 // roundings (relative 2^-53 each) of its own arithmetic and of vmax (norm_upper):
 //   kSpeedBound   = 0x1.11111111112p-6 ≥ (1/60)·(1 + 2^-45): 1/60 = 0x1.111…p-6, cut after 44 bits and rounded
-//                   up; 2^-45 > 2^-50 > eight roundings of 2^-53. Tight on purpose (below (1/60)(1 + 2^-44)):
-//                   lowering it under 1/60 lets a pair that meets at the horizon's end escape the list
-//                   (tests/pair_list_test.cpp builds such a pair and catches it).
+//                   up; 2^-45 > 2^-50 > eight roundings of 2^-53; below (1/60)(1 + 2^-44), as
+//                   tests/pair_list_test.cpp recomputes. No world shows that margin's edge, nor 1/60's:
+//                   where moves are exact the drift term is slack (far·kDriftBound, about 2^-51.7 of a step
+//                   or more for a pair that closes its gap within the horizon), and so are the list
+//                   filter's margin (2^-50 of the distance) and outward_upper's (2^-52). A speed term short
+//                   of 1/60 by less than those lists the same pairs in every world tried: vmax/60 and
+//                   vmax·RN(1/60), short by at most norm_upper's 2^-50 and by 2^-56, pass every test
+//                   (tried). Whether the other terms' roundings could all go against such a term at once is
+//                   not proven either way, so kSpeedBound keeps its own margin. The tests put the whole step
+//                   bound at its edge instead: two points that meet at the horizon's end in the tightest
+//                   world are dropped by a speed term short of 1/60 by 2^-49 (not by 2^-49.2).
 //   kDriftBound   = 0x1.6a1p-53 ≥ √2·2^-53·(1 + 2^-14): √2 = 0x1.6a09e6…, rounded up at 12 bits. Its margin
-//                   also covers `far` leaving out the drift itself (H·2^-52 relative, H ≤ kMaxHorizon).
+//                   also covers `far` leaving out the drift itself (H·2^-52 relative, H ≤ kMaxHorizon). Its
+//                   edge is on the diagonal, where both coordinates round forward by half an ulp: 2^-53 (the √2
+//                   left out) drops such a pair (tests/pair_list_test.cpp).
 //   kDriftAbsolute = 0x1p-1073 ≥ 2·√2·2^-1075.
 //   far           = reach + H·vmax·kSpeedBound, reach = the largest |coordinate| of world t.
 // The exact engine's moves are exact (X ← X + V): its skin is the speed term alone, on its own vmax.
@@ -91,6 +101,17 @@ inline double skin_for(std::uint64_t horizon, double vmax, double reach, double 
 //   kGapRelative = 2^-49 (> 2^-50 + u + 3u) and kGapAbsolute = 2^-500 > √(3η) ≈ 2^-536.7; the last
 //   subtraction and the quotient round by u each, which the quotient's factor (1 − 2^-48) absorbs;
 //   the step is ⌈RN(g/(2·step))·(1 − 2^-48)⌉, 0 for g ≤ 0, and kNever when it is past the horizon.
+// Which of these a test can reach (tests/pair_list_test.cpp; each tried by lowering it):
+//   kGapRelative  the root's rounding is u of the distance, not of the gap: without it first_step answers
+//                 late for a gap of a whole number of steps that is small beside the distance (its property
+//                 test fails).
+//   kQuotientShrink  covered twice over: kGapRelative takes 2^-49·(root + sum) off, of which the root's own
+//                 rounding needs at most 4u·root (norm_upper's 2^-50), leaving at least 12u of the gap, and
+//                 the subtraction and the quotient round by u of the gap each: a quotient left unshrunk is
+//                 never late (tried: no test fails, and none can); it stays for the derivation's sake.
+//   kGapAbsolute  where the squares underflow, RN(√d2) exceeds the distance by an absolute amount no
+//                 relative margin covers: 2^-538.27 where two squares just above half the least subnormal
+//                 round up to it. 2^-539 drops such a pair and the engines miss its contact; 2^-538 does not.
 // A non-finite gap (only within reach of the double range) gives 0: test from the first step.
 inline constexpr double kGapRelative = 0x1p-49;
 inline constexpr double kGapAbsolute = 0x1p-500;

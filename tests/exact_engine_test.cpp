@@ -363,6 +363,45 @@ TEST(exact_engine, kept_lists_hold_a_pair_that_meets_exactly_when_the_horizon_en
   }
 }
 
+// The list built at world 0 of `w` for the horizon h holds the pair {0, 1}, the engine follows the oracle
+// through that list and the next, and the pair does meet: three steps past the horizon, circle 0 has circle
+// 1's velocity.
+void expect_kept_and_met(const Circles& w, std::uint64_t h) {
+  ExactEngine engine(World(w), kept(h));
+  EXPECT_EQ(engine.candidates(), (std::vector<CandidatePair>{{0, 1}})) << "H = " << h;
+  EXPECT_EQ(first_difference(engine, exact_of(w), static_cast<int>(h) + 3), 0) << "H = " << h;
+  const std::array<double, 5> got = engine.world().circles()[0];
+  EXPECT_TRUE(got[2] == w[1][2] && got[3] == w[1][3]) << "H = " << h << ": they never met";
+}
+
+TEST(exact_engine, kept_lists_hold_two_points_that_meet_when_the_horizon_ends_on_the_skin_and_padding_together) {
+  // The edge of the skin and the centres' padding together: the padding, 2.5·e per circle with e about 2^-49
+  // of its largest coordinate, is slack wherever the centres are doubles, and covers a speed term short of
+  // 1/60 by less than it (impl/exact_engine.cpp, the skin's derivation). So the padding is made least: two
+  // points (radii 0), one at the origin (e is then 2^-1073 alone), the other at 2H·(3, 4) (e = 8H·2^-49),
+  // closing at ±(180, 240), 5 a step each, exactly, and coinciding at H·(3, 4) in world H. The pair is listed
+  // iff 2·skin + 20H·2^-49 reaches 10H within the filter's margin: a speed term short of 1/60 by 2^-47.2
+  // drops it for every H here and by 2^-47.6 at H = 100 (tried: the engine then misses the contact; 2^-47.8
+  // is within the slack), where the unit circles of the test above need 2^-47.2.
+  for (const std::uint64_t h : {1u, 2u, 16u, 100u}) {
+    const double c = static_cast<double>(h);
+    expect_kept_and_met({{0, 0, 180, 240, 0}, {6 * c, 8 * c, -180, -240, 0}}, h);
+  }
+}
+
+TEST(exact_engine, kept_lists_give_a_pair_whose_squares_underflow_the_first_step_the_absolute_gap_term_allows) {
+  // kGapAbsolute's edge, as in tests/pair_list_test.cpp: points c·2^-537 apart on each axis (c just above √½),
+  // whose squares each round up to the least subnormal, so that the rounded distance is too long by
+  // 2^-538.27; they coincide in world H. The padding here is below 2^-584 and changes nothing: kGapAbsolute
+  // below 2^-538.27 drops the pair and the engine misses the contact (tried: zero and 2^-539).
+  const double d = 0x1.6a09e8p-1 * 0x1p-537;
+  ASSERT_EQ(d * d, 0x1p-1074);
+  for (const std::uint64_t h : {1u, 16u}) {
+    const double v = 60 * d / static_cast<double>(2 * h);
+    expect_kept_and_met({{0, 0, v, v, 0}, {d, d, -v, -v, 0}}, h);
+  }
+}
+
 TEST(exact_engine, kept_lists_hold_a_pair_whose_speed_no_double_holds_when_it_meets_at_the_horizons_end) {
   // Positions on thirds (L = 3, D = 180) and v = ±20: each circle moves 1/3 a step, exactly; V = 60 and the
   // speed bound reads it as 60·RN(1/3), below 20 by a relative 2^-54, which kSpeedBound's margin must cover.

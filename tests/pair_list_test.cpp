@@ -38,6 +38,19 @@ int first_divergence(const Circles& w, std::uint64_t horizon, int steps) {
   return 0;
 }
 
+// The list built at world 0 of `w` for the horizon h holds the pair {0, 1}, the engine follows step_all_pairs
+// bit for bit through that list and the next, and the pair does meet: three steps past the horizon, circle 0
+// has circle 1's velocity.
+void expect_listed_and_met(const Circles& w, std::uint64_t h) {
+  Engine e{World{w}, {.threads = 1, .keep_pairs = true, .horizon = h}};
+  EXPECT_EQ(e.candidates(), (std::vector<CandidatePair>{{0, 1}})) << "H = " << h;
+  EXPECT_EQ(first_divergence(w, h, static_cast<int>(h) + 3), 0) << "H = " << h;
+  Engine plain{World{w}, {.threads = 1, .keep_pairs = false}};
+  for (std::uint64_t s = 0; s < h + 3; ++s) plain.step();
+  const std::array<double, 5> got = plain.world().circles()[0];
+  EXPECT_TRUE(got[2] == w[1][2] && got[3] == w[1][3]) << "H = " << h << ": they never met";
+}
+
 TEST(pair_list, the_speed_bound_is_at_least_one_sixtieth_with_the_margin_its_derivation_claims) {
   // kSpeedBound ≥ (1/60)(1 + 2^-45), and only just: it is 1/60 rounded up at 44 bits, below (1/60)(1 + 2^-44).
   const Q k = exact(kSpeedBound), sixtieth = Q(1) / 60;
@@ -143,24 +156,63 @@ TEST(pair_list, a_pair_that_meets_exactly_when_the_horizon_ends_is_listed_and_it
   }
 }
 
+TEST(pair_list, two_points_that_meet_at_the_origin_when_the_horizon_ends_are_listed_on_the_whole_step_bound) {
+  // The edge of the whole step bound (speed + drift + absolute term), not of kSpeedBound alone: the terms
+  // around the speed term have slack of their own wherever moves are exact, and a speed term below 1/60 by
+  // less than that slack drops no pair (impl/pair_list.hpp, beside kSpeedBound). So the world makes it least.
+  // Two points (radii 0: nothing for outward_upper to widen but the skin, and the list's filter weighs the
+  // distance against the inflated radii alone) at ∓H·(3, 4) close at ±(180, 240), 5 a step each, every move
+  // exact, and coincide at the origin in world H. Along (3, 4) the reach is 4H, not 5H, so the drift term,
+  // far·kDriftBound with far = 4H + 5H, is 9H·2^-52.5 a step, 2^-51.7 of the motion at H = 1. The pair is
+  // listed iff the inflated radii reach 5H within the filter's margin (2^-50 of the distance) and
+  // outward_upper's (2^-52): a speed term short of 1/60 by 2^-49 drops it at H = 1 and 2 (tried: the list is
+  // then empty and the engine misses the contact; 2^-49.2 is within the slack), where the unit circles of
+  // the test above need 2^-48.6. No world with exact moves has less slack: the filter's margin is relative to
+  // the distance, least with radii 0, and the drift term grows with H.
+  for (const std::uint64_t h : {1u, 2u, 16u}) {
+    const double c = static_cast<double>(h);
+    expect_listed_and_met({{-3 * c, -4 * c, 180, 240, 0}, {3 * c, 4 * c, -180, -240, 0}}, h);
+  }
+}
+
+TEST(pair_list, a_pair_whose_squares_underflow_is_given_the_first_step_the_absolute_gap_term_allows) {
+  // The edge of kGapAbsolute, the only bound that covers the squares' underflow. Two points c·2^-537 apart on
+  // each axis, c = 0x1.6a09e8p-1 just above √½: each square, c²·2^-1074, rounds up to the least subnormal,
+  // so RN(√d2) = √2·2^-537 while the distance is √2·c·2^-537, too long by (1 − c)·√2·2^-537 ≈ 2^-538.27.
+  // They close it in H exact steps and coincide in world H; the step bound is within 2^-44 of their motion
+  // (the drift and absolute terms are below 2^-580 here), so without kGapAbsolute the first step would be
+  // ⌈H/c⌉ > H, never: kGapAbsolute below 2^-538.27 (tried: zero and 2^-539) drops the pair and the engine
+  // misses the contact. 2^-500 covers √(3η) ≈ 2^-536.7, the most three underflows can add.
+  const double c = 0x1.6a09e8p-1;
+  ASSERT_GT(c * c, 0.5);
+  const double d = c * 0x1p-537;
+  ASSERT_EQ(d * d, 0x1p-1074);
+  for (const std::uint64_t h : {1u, 2u, 16u}) {
+    const double v = 60 * d / static_cast<double>(2 * h);  // d/(2H) a step, exactly
+    ASSERT_EQ(v / 60 * static_cast<double>(2 * h), d);
+    expect_listed_and_met({{0, 0, v, v, 0}, {d, d, -v, -v, 0}}, h);
+  }
+}
+
 TEST(pair_list, a_pair_whose_rounding_carries_it_half_an_ulp_further_every_step_is_listed) {
   // Above 2^53 the ulp is 2: a move of v/60 = 1 + 2^-40 rounds up to 2 every step, one half ulp more than the
-  // velocity moves it, which is |p'|·2^-53: the drift term's edge on one axis. Circles at 2^53 and
-  // 2^53 + 2 + 4H close by 4 per step and first touch in world H; the skin covers 2H only with the drift
-  // term (the speed term alone gives H·(1 + 2^-40)), so a drift bound below 2^-53 drops the pair.
+  // velocity moves it, which is |p'|·2^-53 on that axis. Circles at 2^53 and 2^53 + 2 + 4H close by 4 per
+  // step and first touch in world H; the skin covers 2H only with the drift term (the speed term alone gives
+  // H·(1 + 2^-40)), so a drift bound below 2^-53 drops the pair. The drift term's edge is on the diagonal,
+  // where both coordinates round forward and |e| = √2·|p'|·2^-53: the same circles moving along (1, 1), with
+  // radii RN(√2) > √2 each, touch first in world H (2√2 apart); the skin covers their 2√2·H of motion with
+  // little more slack than kDriftBound's own margin (2^-14 of the drift, about 2^-13.5 a step), and a drift
+  // bound of 2^-53 (the √2 left out) drops the pair for every H here (tried), which the axis alone does not.
   const double v = 60 + 0x1p-40 * 60;
   ASSERT_EQ(v / 60, 1 + 0x1p-40);
+  const double root_two = std::sqrt(2.0);
+  ASSERT_GT(exact(root_two) * exact(root_two), Q(2));
   for (const std::uint64_t h : {1u, 3u, 16u, 64u}) {
     const double a = 0x1p53, b = 0x1p53 + 2 + 4 * static_cast<double>(h);
-    const Circles w{{a, 0, v, 0, 1}, {b, 0, -v, 0, 1}};
     ASSERT_EQ(advance_rounded(a, v), a + 2);
-    Engine e{World{w}, {.threads = 1, .keep_pairs = true, .horizon = h}};
-    EXPECT_EQ(e.candidates(), (std::vector<CandidatePair>{{0, 1}})) << "H = " << h;
-    EXPECT_EQ(first_divergence(w, h, static_cast<int>(h) + 3), 0) << "H = " << h;
-    // They do meet in world H: the step from it exchanges velocities.
-    Engine plain{World{w}, {.threads = 1, .keep_pairs = false}};
-    for (std::uint64_t s = 0; s <= h; ++s) plain.step();
-    EXPECT_EQ(plain.world().circles()[0][2], -v) << "H = " << h;
+    ASSERT_EQ(advance_rounded(b, -v), b - 2);
+    expect_listed_and_met({{a, 0, v, 0, 1}, {b, 0, -v, 0, 1}}, h);
+    expect_listed_and_met({{a, a, v, v, root_two}, {b, b, -v, -v, root_two}}, h);
   }
 }
 
