@@ -19,6 +19,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <exception>
 #include <limits>
 #include <span>
 #include <stdexcept>
@@ -51,12 +52,32 @@ inline std::size_t chunk_count(std::size_t n, unsigned threads) {
 }
 inline std::size_t chunk_begin(std::size_t n, std::size_t chunks, std::size_t c) { return n * c / chunks; }
 
-// Runs f(c) for every chunk c, on up to `threads` threads (OpenMP; the including target links it).
+// Runs f(c) for every chunk c, on up to `threads` threads (OpenMP; the including target links it). An
+// exception may not leave an OpenMP region (it would terminate the program), so each is caught in its chunk
+// and the one of the least chunk is rethrown after the region: a failed allocation is std::bad_alloc for the
+// caller, whatever the thread count. One chunk runs without a region.
 template <class F>
 void for_each_chunk(std::size_t chunks, unsigned threads, F&& f) {
+  if (chunks <= 1) {
+    if (chunks == 1) f(std::size_t{0});
+    return;
+  }
   const auto count = static_cast<long>(chunks);
-#pragma omp parallel for num_threads(threads) schedule(static) if (chunks > 1)
-  for (long c = 0; c < count; ++c) f(static_cast<std::size_t>(c));
+  std::exception_ptr error;
+  long failed = count;  // the least chunk that threw
+#pragma omp parallel for num_threads(threads) schedule(static)
+  for (long c = 0; c < count; ++c) {
+    try {
+      f(static_cast<std::size_t>(c));
+    } catch (...) {
+#pragma omp critical(circles_for_each_chunk)
+      if (c < failed) {
+        failed = c;
+        error = std::current_exception();
+      }
+    }
+  }
+  if (error) std::rethrow_exception(error);
 }
 
 // keys[t] = grid.key(px[t], py[t], r[t]) for every slot, per chunk. Where a circle has drifted out of the planned

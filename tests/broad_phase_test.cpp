@@ -13,6 +13,8 @@
 #include <map>
 #include <numeric>
 #include <random>
+#include <stdexcept>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -198,6 +200,31 @@ TEST(broad_phase, the_re_sort_in_parts_on_several_threads_equals_a_plain_sort) {
     std::vector<std::uint32_t> identity;
     EXPECT_TRUE(order.sort(again, moved, identity, threads));
   }
+}
+
+}  // namespace
+}  // namespace circles::impl
+
+namespace circles::impl {
+namespace {
+
+TEST(threads, an_exception_in_a_chunk_reaches_the_caller_as_the_least_chunks_whatever_the_thread_count) {
+  // An exception may not leave an OpenMP region (the program would terminate, as a failed allocation in a
+  // parallel part once did): for_each_chunk rethrows the least failing chunk's after every chunk has run.
+  for (const unsigned threads : {1u, 2u, 4u})
+    for (const std::size_t chunks : {std::size_t{1}, std::size_t{8}}) {
+      std::vector<int> ran(chunks, 0);
+      try {
+        for_each_chunk(chunks, threads, [&](std::size_t c) {
+          ran[c] = 1;
+          if (c % 3 == 2 || chunks == 1) throw std::runtime_error("chunk " + std::to_string(c));
+        });
+        ADD_FAILURE() << "nothing thrown";
+      } catch (const std::runtime_error& e) {
+        EXPECT_STREQ(e.what(), chunks == 1 ? "chunk 0" : "chunk 2") << threads << " threads";
+      }
+      EXPECT_EQ(std::count(ran.begin(), ran.end(), 1), static_cast<long>(chunks)) << threads << " threads";
+    }
 }
 
 }  // namespace
