@@ -386,7 +386,7 @@ Declared declared_in(const std::vector<std::string>& folders) {
 // A doc that cites `formats::json_number::append` or `Reading::answer` sends a reader to code that must be there:
 // the first name is a namespace of ours, whose folder declares each name after it but the last as a namespace,
 // class, struct or enum class, and whose headers name the last; or, unqualified, such a scope of any folder, with
-// the member in its headers. docs/benchmarks.md is left out while its figures are rewritten.
+// the member in its headers.
 TEST(docs, every_qualified_name_the_docs_cite_is_declared_where_its_namespace_says) {
   const std::map<std::string, std::string> folder_of = {
       {"spec", "spec"},       {"impl", "impl"},   {"exact", "impl"},         {"formats", "formats"},
@@ -400,7 +400,6 @@ TEST(docs, every_qualified_name_the_docs_cite_is_declared_where_its_namespace_sa
   const std::regex cited(R"(`((?:\w+::)+\w+)(?:\(\w*\))?`)");
   int names = 0;
   for (const std::filesystem::path& doc : markdown_docs()) {
-    if (doc == "docs/benchmarks.md") continue;
     const std::string text = text_of(doc);
     for (std::sregex_iterator c(text.begin(), text.end(), cited), end; c != end; ++c) {
       std::vector<std::string> parts;
