@@ -296,9 +296,7 @@ void BasicEngine<A>::rebuild() {
   // from step 0.
   const double *px = now_.px.data(), *py = now_.py.data(), *r = slack > 0 ? padded_.data() : now_.r.data(),
                *ri = inflated_.data();
-  pairs_.build(grid_, view, threads_, horizon, [px, py, r, ri, step, horizon](std::size_t a, std::size_t b) {
-    return listing_step(px[a], py[a], r[a], ri[a], px[b], py[b], r[b], ri[b], step, horizon);
-  });
+  pairs_.build(grid_, view, threads_, horizon, Lister{px, py, r, ri, step, horizon});
   built_at_ = stats_.steps;
   stats_.pairs_listed += pairs_.size();
   ++stats_.rebuilds;

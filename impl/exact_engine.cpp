@@ -596,9 +596,7 @@ void ExactEngine::rebuild(Columns<Int>& s) {
   // A pair disjoint at the inflated radii cannot meet within the horizon; one that intersects at the padded
   // radii may meet now; the rest from their gap (first_step), the padded radii bounding the exact gap below.
   const double *px = a.x.data(), *py = a.y.data(), *r = padded_.data(), *ri = inflated_.data();
-  pairs_.build(grid_, view, threads_, horizon, [px, py, r, ri, step, horizon](std::size_t i, std::size_t k) {
-    return listing_step(px[i], py[i], r[i], ri[i], px[k], py[k], r[k], ri[k], step, horizon);
-  });
+  pairs_.build(grid_, view, threads_, horizon, Lister{px, py, r, ri, step, horizon});
   listed_.clear();
   for (std::size_t t = 0; t < n; ++t)
     if (pairs_.listed(t)) listed_.push_back(static_cast<std::uint32_t>(t));

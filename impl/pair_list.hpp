@@ -158,6 +158,25 @@ inline std::uint32_t first_step(double ax, double ay, double ar, double bx, doub
   return first_step_from(dx, dy, d2, ar, br, step, horizon);
 }
 
+// What PairList::build lists with, for both engines: circles (px, py) with radii r (the padded ones, bounding
+// the exact gap below) and ri ≥ r (inflated by the skin), for a horizon of `horizon` steps of at most `step`.
+// near(a, b) is listing_step's first filter alone, false exactly when that filter returns kNever, so that the
+// broad phase can reject most candidates without a branch on each (half of them go either way: a branch per
+// candidate mispredicts about every other time); (a, b) is listing_step.
+struct Lister {
+  const double *px, *py, *r, *ri;
+  double step;
+  std::uint64_t horizon;
+
+  [[gnu::always_inline]] bool near(std::size_t a, std::size_t b) const noexcept {
+    const double dx = px[b] - px[a], dy = py[b] - py[a];
+    return !certainly_disjoint_of_squares(dx * dx + dy * dy, ri[a] + ri[b], kAbsolute);
+  }
+  [[gnu::always_inline]] std::uint32_t operator()(std::size_t a, std::size_t b) const noexcept {
+    return listing_step(px[a], py[a], r[a], ri[a], px[b], py[b], r[b], ri[b], step, horizon);
+  }
+};
+
 // ── The schedule ──────────────────────────────────────────────────────────────────────────────────────
 //
 // The next horizon from what the last list cost. A list serves H + 1 steps, testing at step j the pairs whose
@@ -224,10 +243,11 @@ class PairList {
   static constexpr std::uint32_t kBuckets = 16;
 
   // Lists every pair {a, b} among those the broad phase offers over `view` (whose radii are the inflated
-  // ones), global slots against every slot, for which first(a, b) ≤ horizon, from that step on. first must
-  // be conservative: no later than the first step of the horizon at which the pair may intersect.
-  template <class First>
-  void build(const CellGrid& grid, const CellView& view, unsigned threads, std::uint64_t horizon, First&& first);
+  // ones), global slots against every slot, for which first(a, b) ≤ horizon, from that step on (candidates
+  // for which first.near(a, b) is false are not asked: first(a, b) would be kNever). first must be
+  // conservative: no later than the first step of the horizon at which the pair may intersect.
+  void build(const CellGrid& grid, const CellView& view, unsigned threads, std::uint64_t horizon,
+             const Lister& first);
 
   // At step j of the horizon (j = 0 in the world the list was built in): least[t] for every slot t that
   // intersects some partner listed from step ≤ j, the least such partner under precedes (a strict total

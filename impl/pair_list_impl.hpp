@@ -22,9 +22,8 @@ inline std::size_t PairList::chunk_of(std::size_t slot) const noexcept {
   return guess;
 }
 
-template <class First>
-void PairList::build(const CellGrid& grid, const CellView& view, unsigned threads, std::uint64_t horizon,
-                     First&& first) {
+inline void PairList::build(const CellGrid& grid, const CellView& view, unsigned threads, std::uint64_t horizon,
+                            const Lister& first) {
   const std::size_t n = view.key.size();
   slots_ = n;
   horizon_ = horizon;
@@ -54,21 +53,31 @@ void PairList::build(const CellGrid& grid, const CellView& view, unsigned thread
     for (std::size_t a = begin; a < end; ++a) {
       const std::size_t bins = (a - begin) / kBlockSlots * kBuckets;
       visit_neighbourhood_runs(grid, view, a, cursor, [&](std::size_t run_begin, std::size_t run_end) {
-        // A copy of the caller's functor per run, in registers: the marks are char stores, which may alias
-        // anything, so a functor in memory would be read again for every candidate.
-        const auto first_of = first;
-        for (std::size_t b = run_begin; b < run_end; ++b) {
-          const std::uint32_t step = first_of(a, b);
-          if (step > horizon) [[likely]]
-            continue;
-          if (size == found.size()) [[unlikely]]
-            found.resize(std::max<std::size_t>(1024, 2 * size));
-          const ListedPair p{static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b), step};
-          found[size++] = p;
-          ++count[bins + std::min(step, kBuckets - 1)];
-          tests += horizon + 1 - step;
-          earliest = std::min<std::uint64_t>(earliest, step);
-          mark(p);
+        // A copy of the lister per run, in registers: the marks are char stores, which may alias anything, so
+        // a lister in memory would be read again for every candidate.
+        const Lister first_of = first;
+        // The candidates near enough to ask, gathered without a branch, kKept at a time.
+        constexpr std::size_t kKept = 64;
+        std::uint32_t kept[kKept];
+        for (std::size_t from = run_begin; from < run_end; from += kKept) {
+          std::size_t near = 0;
+          for (std::size_t b = from, to = std::min(run_end, from + kKept); b < to; ++b) {
+            kept[near] = static_cast<std::uint32_t>(b);
+            near += first_of.near(a, b);
+          }
+          for (std::size_t k = 0; k < near; ++k) {
+            const std::size_t b = kept[k];
+            const std::uint32_t step = first_of(a, b);
+            if (step > horizon) continue;
+            if (size == found.size()) [[unlikely]]
+              found.resize(std::max<std::size_t>(1024, 2 * size));
+            const ListedPair p{static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b), step};
+            found[size++] = p;
+            ++count[bins + std::min(step, kBuckets - 1)];
+            tests += horizon + 1 - step;
+            earliest = std::min<std::uint64_t>(earliest, step);
+            mark(p);
+          }
         }
       });
     }
