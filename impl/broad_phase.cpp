@@ -14,31 +14,37 @@ namespace circles::impl {
 void CellGrid::plan(std::span<const double> px, std::span<const double> py, std::span<const double> r) {
   const std::size_t n = px.size();
   if (py.size() != n || r.size() != n) throw std::invalid_argument("CellGrid::plan: px, py and r differ in size");
-  double xlo = std::numeric_limits<double>::infinity(), ylo = xlo, xhi = -xlo, yhi = -xlo;
+  // The median width from at most kMedianSample circles spread evenly over the slots: the median only sets
+  // the limit below, a speed choice (any base cell is correct), so no plan sorts n widths.
+  const auto width = [&](std::size_t k) { return outward_upper(px[k], r[k]) - outward_lower(px[k], r[k]); };
+  const std::size_t sample = std::min(n, kMedianSample);
   std::vector<double> widths;
-  widths.reserve(n);
+  widths.reserve(sample);
+  for (std::size_t s = 0; s < sample; ++s)
+    if (const double w = width(s * n / sample); std::isfinite(w)) widths.push_back(w);
+  double limit = 0;
+  if (!widths.empty()) {
+    const auto middle = widths.begin() + static_cast<std::ptrdiff_t>(widths.size() / 2);
+    std::nth_element(widths.begin(), middle, widths.end());
+    limit = kWidthSpread * *middle;
+  }
+  // The base cell: the largest width within kWidthSpread medians (0 for an empty world, or one whose sample
+  // has no finite width); the extent of the boxes.
+  double base = 0;
+  double xlo = std::numeric_limits<double>::infinity(), ylo = xlo, xhi = -xlo, yhi = -xlo;
   for (std::size_t k = 0; k < n; ++k) {
     const double a = outward_lower(px[k], r[k]), b = outward_upper(px[k], r[k]);
     const double c = outward_lower(py[k], r[k]), d = outward_upper(py[k], r[k]);
-    if (std::isfinite(b - a)) widths.push_back(b - a);
+    if (b - a <= limit) base = std::max(base, b - a);
     if (std::isfinite(a)) xlo = std::min(xlo, a);
     if (std::isfinite(b)) xhi = std::max(xhi, b);
     if (std::isfinite(c)) ylo = std::min(ylo, c);
     if (std::isfinite(d)) yhi = std::max(yhi, d);
   }
-  // The base cell: the largest width within kWidthSpread medians (0 for an empty world).
-  double base = 0;
-  if (!widths.empty()) {
-    const auto middle = widths.begin() + static_cast<std::ptrdiff_t>(widths.size() / 2);
-    std::nth_element(widths.begin(), middle, widths.end());
-    const double limit = kWidthSpread * *middle;
-    for (const double w : widths)
-      if (w <= limit) base = std::max(base, w);
-    // A box's computed width depends on where the circle is (the roundings of x ± r): a circle that moves
-    // can come out an ulp wider than it was planned with, miss level 0, and make every circle search the
-    // level above. kBaseSlack keeps the widest planned box inside level 0 after such moves.
-    base *= kBaseSlack;
-  }
+  // A box's computed width depends on where the circle is (the roundings of x ± r): a circle that moves can
+  // come out an ulp wider than it was planned with, miss level 0, and make every circle search the level
+  // above. kBaseSlack keeps the widest planned box inside level 0 after such moves.
+  base *= kBaseSlack;
   // At least the extent over kPlannedCells, so the scene fits in the grid; halves keep the extent finite.
   const double extent = std::max(xhi / 2 - xlo / 2, yhi / 2 - ylo / 2);
   if (std::isfinite(extent)) base = std::max(base, extent / (kPlannedCells / 2));

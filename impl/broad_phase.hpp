@@ -106,8 +106,9 @@ class CellGrid {
 
   // Chooses the base cell and the origin for circles (px, py, r): the base cell is the largest box width
   // that is at most kWidthSpread times the median width (so one huge circle does not coarsen the grid for all
-  // the others; it takes a higher level), and at least the extent / kPlannedCells. Any finite choice is
-  // correct (see above); this one is for speed. Spans must have equal sizes.
+  // the others; it takes a higher level), and at least the extent / kPlannedCells. The median is that of at
+  // most kMedianSample boxes, every (n / kMedianSample)-th slot's. Any finite choice is correct (see above);
+  // this one is for speed. Spans must have equal sizes.
   void plan(std::span<const double> px, std::span<const double> py, std::span<const double> r);
 
   // The cell index of x along one axis at a level: monotone in x. `origin` is the axis's origin.
@@ -153,6 +154,7 @@ class CellGrid {
  private:
   static constexpr double kLastCell = static_cast<double>(kCells - 1);
   static constexpr double kWidthSpread = 4.0;
+  static constexpr std::size_t kMedianSample = 4096;
   static constexpr double kBaseSlack = 1 + 0x1p-10;  // plan(): the base cell a little wider than the widest box
   double origin_x_ = 0, origin_y_ = 0, base_cell_ = 1;
   std::array<double, kLevels> inverse_{};  // inv_L = 4^-L / base cell
