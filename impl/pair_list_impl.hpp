@@ -33,11 +33,15 @@ inline void PairList::build(const CellGrid& grid, const CellView& view, unsigned
   // stores, all of the same value.
   std::vector<unsigned char>& listed = listed_;
   listed.assign(n, 0);
-  const auto mark = [&listed](const ListedPair& p) {
+  // A listed pair counted in a tally (its tests over the horizon, its earliest first step) and its slots marked.
+  using Tally = std::array<std::uint64_t, 2>;
+  const auto take = [&listed, horizon](Tally& into, const ListedPair& p) {
+    into[0] += horizon + 1 - p.first;
+    into[1] = std::min<std::uint64_t>(into[1], p.first);
     std::atomic_ref<unsigned char>(listed[p.a]).store(1, std::memory_order_relaxed);
     std::atomic_ref<unsigned char>(listed[p.b]).store(1, std::memory_order_relaxed);
   };
-  std::vector<std::array<std::uint64_t, 2>> tally(chunks + 1);  // per chunk: tests, earliest first step
+  std::vector<Tally> tally(chunks + 1, Tally{0, horizon + 1});  // per chunk, then the global pairs'
   // The pairs of each chunk in the order the broad phase offers them (by first slot), each counted in its
   // (block, bucket) bin and in the chunk's tally as it is found: its tests over the horizon, its earliest
   // first step, its slots' marks.
@@ -48,7 +52,7 @@ inline void PairList::build(const CellGrid& grid, const CellView& view, unsigned
     chunk.starts.assign((end - begin + kBlockSlots - 1) / kBlockSlots * kBuckets + 1, 0);
     std::uint32_t* const count = chunk.starts.data() + 1;
     std::size_t size = 0;
-    std::uint64_t tests = 0, earliest = horizon + 1;
+    Tally mine{0, horizon + 1};  // a local, kept in registers, written to tally[c] at the end
     NeighbourCursor cursor;
     for (std::size_t a = begin; a < end; ++a) {
       const std::size_t bins = (a - begin) / kBlockSlots * kBuckets;
@@ -74,29 +78,24 @@ inline void PairList::build(const CellGrid& grid, const CellView& view, unsigned
             const ListedPair p{static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b), step};
             found[size++] = p;
             ++count[bins + std::min(step, kBuckets - 1)];
-            tests += horizon + 1 - step;
-            earliest = std::min<std::uint64_t>(earliest, step);
-            mark(p);
+            take(mine, p);
           }
         }
       });
     }
     chunk.size = size;
-    tally[c] = {tests, earliest};
+    tally[c] = mine;
   });
   // Global slots (a box too wide for every level) against every slot, each pair once.
   global_.clear();
   const std::size_t global = view.level_begin[CellGrid::kGlobalLevel];
-  tally[chunks] = {0, horizon + 1};
   for (std::size_t g = global; g < n; ++g)
     for (std::size_t b = 0; b < n; ++b) {
       if (b == g || (b >= global && b < g)) continue;
       const std::uint32_t step = first(g, b);
       if (step > horizon) continue;
       global_.push_back({static_cast<std::uint32_t>(std::min(g, b)), static_cast<std::uint32_t>(std::max(g, b)), step});
-      tally[chunks][0] += horizon + 1 - step;
-      tally[chunks][1] = std::min<std::uint64_t>(tally[chunks][1], step);
-      mark(global_.back());
+      take(tally[chunks], global_.back());
     }
   // Per chunk, the rest of a counting sort by (block, bucket), stable, so each bucket stays in slot order: the
   // pairs are by first slot already, so each block's pairs are one run, sorted by bucket where it is through a

@@ -58,36 +58,40 @@ inline constexpr double kAbsoluteRescaled = 0x1p-1070;
 // absolute term is under 2^-122·M·2^-50, so rescaling would give the same verdict and only cost time.
 inline constexpr double kRescaleBelow = 0x1p-900;
 
-// The certified sign of F = S² − X² − Y², from q = RN(RN(dx²) + RN(dy²)) and s, where dx, dy, s are X, Y, S
-// rounded once each (plus, in Stage A', the absolute error kAbsoluteRescaled allows for). `absolute` is
-// kAbsolute or kAbsoluteRescaled.
+// Stage A's two computed terms from q = RN(RN(dx²) + RN(dy²)) and s, where dx, dy, s are X, Y, S rounded once
+// each (plus, in Stage A', the absolute error kAbsoluteRescaled allows for): D = RN(s² − q), the computed F,
+// and its certified error bound RN(RN(M·2^-50) + absolute) with M = RN(s² + q). `absolute` is kAbsolute or
+// kAbsoluteRescaled. The sign of F is decided when |D| > bound.
+struct FilterTerms {
+  double d, bound;
+};
+inline FilterTerms filter_terms(double q, double s, double absolute) {
+  const double p = s * s;
+  const double m = p + q;  // +inf on any overflow, and then the bound is +inf: undecided
+  return {p - q, m * kRelative + absolute};
+}
+
+// The certified sign of F = S² − X² − Y² from those terms.
 // Branch-free so that a loop over it vectorizes: both comparisons are always made and combined as integers
 // (GCC does not if-convert a floating-point comparison that the source makes conditionally).
 inline Decision sign_filter_of_squares(double q, double s, double absolute) {
-  const double p = s * s;
-  const double d = p - q;
-  const double m = p + q;  // +inf on any overflow, and then the bound is +inf: undecided
-  const double bound = m * kRelative + absolute;
+  const auto [d, bound] = filter_terms(q, s, absolute);
   const bool decided = std::fabs(d) > bound;
   const bool positive = d > 0;
   // intersect (1) if decided and positive, disjoint (0) if decided and not, undecided (2) otherwise
   return static_cast<Decision>((decided & positive) | (!decided) << 1);
 }
 // sign_filter_of_squares(q, s, absolute) == Decision::disjoint, in fewer operations, for the loops that
-// mostly reject (the pair lists' broad phase). The same d and bound; "decided and not positive" is
-// |d| > bound ∧ d ≤ 0, which is −d > bound: for d ≤ 0, |d| = −d, and for d > 0, −d < 0 < bound (bound ≥
-// absolute > 0, or +∞ or NaN, where both forms are false). tests/predicate_test.cpp holds the two equal.
+// mostly reject (the pair lists' broad phase). "Decided and not positive" is |d| > bound ∧ d ≤ 0, which is
+// −d > bound: for d ≤ 0, |d| = −d, and for d > 0, −d < 0 < bound (bound ≥ absolute > 0, or +∞ or NaN, where
+// both forms are false). tests/predicate_test.cpp holds the two equal.
 inline bool certainly_disjoint_of_squares(double q, double s, double absolute) {
-  const double p = s * s;
-  const double d = p - q;
-  const double bound = (p + q) * kRelative + absolute;
+  const auto [d, bound] = filter_terms(q, s, absolute);
   return -d > bound;
 }
 // sign_filter_of_squares(q, s, absolute) == Decision::intersect, likewise: d > bound (then d > 0 and |d| = d).
 inline bool certainly_intersecting_of_squares(double q, double s, double absolute) {
-  const double p = s * s;
-  const double d = p - q;
-  const double bound = (p + q) * kRelative + absolute;
+  const auto [d, bound] = filter_terms(q, s, absolute);
   return d > bound;
 }
 // The same from dx and dy: q = RN(RN(dx²) + RN(dy²)).
