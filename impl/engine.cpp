@@ -149,7 +149,7 @@ void BasicEngine<A>::step() {
     contacts = pairs_.least_contacts(
         j, threads_, least_, touched_, tested,
         [px, py, r](std::size_t a, std::size_t b) { return A::intersect(px[a], py[a], r[a], px[b], py[b], r[b]); },
-        [this](std::size_t a, std::size_t b) { return precedes(a, b); });
+        [this](std::size_t a, std::size_t b) { return precedes(a, b); }, PrefetchCircles{px, py, r});
   } else {
     ++stats_.quiet_steps;
     for (std::vector<std::uint32_t>& list : touched_) list.clear();

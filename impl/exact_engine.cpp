@@ -372,7 +372,8 @@ void ExactEngine::step_with(Columns<Int>& s) {
             return d == Decision::intersect;
           return intersect_exactly(s, i, k);
         },
-        [&](std::size_t i, std::size_t k) { return precedes(s, i, k); });
+        [&](std::size_t i, std::size_t k) { return precedes(s, i, k); },
+        PrefetchCircles{a.x.data(), a.y.data(), a.rho.data()});
   } else {
     ++stats_.quiet_steps;
     for (std::vector<std::uint32_t>& list : touched_) list.clear();

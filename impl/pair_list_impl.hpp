@@ -126,10 +126,10 @@ inline void PairList::build(const CellGrid& grid, const CellView& view, unsigned
   lonely_ = static_cast<std::size_t>(std::count(listed.begin(), listed.end(), 0));
 }
 
-template <class Intersect, class Precedes>
+template <class Intersect, class Precedes, class Prefetch>
 std::size_t PairList::least_contacts(std::uint64_t j, unsigned threads, std::vector<std::uint32_t>& least,
                                      std::vector<std::vector<std::uint32_t>>& touched, std::size_t& tested,
-                                     Intersect&& intersect, Precedes&& precedes) {
+                                     Intersect&& intersect, Precedes&& precedes, Prefetch&& prefetch) {
   const std::size_t chunks = chunks_.size();
   touched.resize(chunks);
   std::vector<std::array<std::size_t, 2>> counts(chunks);  // per chunk: pairs tested, pairs intersecting
@@ -150,6 +150,7 @@ std::size_t PairList::least_contacts(std::uint64_t j, unsigned threads, std::vec
     // cannot make the compiler reload them for every pair.
     const auto intersects = intersect;
     const auto before = precedes;
+    const auto ask = prefetch;
     const ListedPair* const pairs = chunk.pairs.data();
     std::vector<std::uint32_t>& mine = touched[c];
     const auto test = [&](const ListedPair& p) {
@@ -164,13 +165,20 @@ std::size_t PairList::least_contacts(std::uint64_t j, unsigned threads, std::vec
       else if (offer_least_contact(least, p.b, p.a, before))
         mine.push_back(p.b);
     };
+    // Pairs [from, to) in order, each tested when it is due; the circles of the pair kPrefetchAhead places on
+    // are asked for meanwhile (their loads are the step's cache misses where pairs are far apart in memory).
+    const auto test_due = [&](std::size_t from, std::size_t to, auto due) {
+      for (std::size_t i = from; i < to; ++i) {
+        if (i + kPrefetchAhead < to) ask(pairs[i + kPrefetchAhead].a, pairs[i + kPrefetchAhead].b);
+        if (due(pairs[i])) test(pairs[i]);
+      }
+    };
     for (std::size_t k = 0; k < blocks; ++k) {
       const std::uint32_t* starts = chunk.starts.data() + k * kBuckets;
       const std::size_t whole = last == kBuckets - 1 ? starts[kBuckets - 1] : starts[last + 1];
-      for (std::size_t i = starts[0]; i < whole; ++i) test(pairs[i]);
+      test_due(starts[0], whole, [](const ListedPair&) { return true; });
       if (last == kBuckets - 1)
-        for (std::size_t i = starts[kBuckets - 1]; i < starts[kBuckets]; ++i)
-          if (pairs[i].first <= j) test(pairs[i]);
+        test_due(starts[kBuckets - 1], starts[kBuckets], [j](const ListedPair& p) { return p.first <= j; });
     }
     counts[c] = {seen, hits};
   });
