@@ -129,6 +129,8 @@ TEST(ConformCommand, families_check_only_those_and_skip_the_others) {
   options.keep_going = true;
   const Printed r = run(options);
   EXPECT_EQ(r.status, 0) << r.err;
+  // Lattice's one case of the 17, its family's only case in one round.
+  EXPECT_EQ(first_line(r.out), "circles conform: the double engine conforms: 1 case, level exact, seed 2, resolved profile");
   EXPECT_NE(r.out.find("\n  lattice             1       passed\n"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("\n  random-doubles      0       skipped\n"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("\n  families: 1 passed, 16 skipped\n"), std::string::npos) << r.out;
@@ -173,6 +175,35 @@ TEST(ConformCommand, a_conforming_engine_exits_0_with_the_verdict_on_the_first_l
   EXPECT_EQ(first_line(r.out),
             "circles conform: the double engine conforms: 17 cases, 1 step each (tangent-after-step 2: chained to the "
             "step that decides its boundary), level exact, seed 2, resolved profile");
+}
+
+TEST(ConformCommand, one_case_is_counted_in_the_singular) {
+  ConformCommandOptions options = double_engine();
+  options.only_case = 0;  // case 0: family lattice, decided in one step
+  options.case_given = true;
+  Printed r = run(options);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(first_line(r.out),
+            "circles conform: the double engine conforms: 1 case, 1 step each, level exact, seed 2, resolved profile");
+  // The same in the table of --keep-going.
+  options.keep_going = true;
+  r = run(options);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(first_line(r.out), "circles conform: the double engine conforms: 1 case, level exact, seed 2, resolved profile");
+}
+
+TEST(ConformCommand, a_family_listed_as_failing_that_passes_fails_the_run_with_its_line) {
+  const TempDir dir;
+  ConformCommandOptions options = double_engine();
+  options.expect = dir.write("double.expect", "lattice fail it does not\n");
+  const Printed r = run(options);
+  EXPECT_EQ(r.status, 1) << r.err;
+  // --expect implies --keep-going: the table, then the unexpected pass after it.
+  EXPECT_EQ(first_line(r.out),
+            "circles conform: the double engine does not conform: 17 cases, level exact, seed 2, resolved profile");
+  EXPECT_NE(r.out.find("\nlattice: unexpected pass (1 case checked): delete its line, " + options.expect + ":1\n"),
+            std::string::npos)
+      << r.out;
 }
 
 TEST(ConformCommand, a_report_is_written_whole_with_the_verdict) {
