@@ -38,7 +38,8 @@ conform::Options check_options(const ConformCommandOptions& given) {
     for (const properties::Family f : properties::families(options.profile))
       if (std::find(only.begin(), only.end(), f) == only.end()) options.skip.push_back(f);
   }
-  if (given.skip_families_given) options.skip = conform::parse_families("--skip-families", given.skip_families, options.profile);
+  if (given.skip_families_given)
+    options.skip = conform::parse_families("--skip-families", given.skip_families, options.profile);
   return options;
 }
 

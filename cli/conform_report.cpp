@@ -127,7 +127,9 @@ void print_families(std::ostream& out, std::span<const conform::FamilyResult> fa
 void print_conforms(const Verdict& v, std::ostream& out) {
   const conform::Options& o = v.options;
   out << "circles conform: " << v.candidate << " conforms: " << counted(v.cases, "case");
-  if (v.skipped) out << " (" << v.skipped << " skipped: their next world leaves the double range)";
+  if (v.skipped)
+    out << " (" << v.skipped << " skipped: " << (v.skipped == 1 ? "its" : "their")
+        << " next world leaves the double range)";
   out << ", " << counted(o.steps, "step") << " each";
   std::string longer;  // "tangent-after-step 2": the families chained further, to the step that decides them
   for (const conform::FamilyResult& f : v.families)
@@ -140,7 +142,8 @@ void print_conforms(const Verdict& v, std::ostream& out) {
   out << "\n";
   if (v.cases > 0) print_families(out, v.families);
   if (v.cut_short)
-    out << "  " << v.cut_short << " chains ended early: their next world leaves the double range"
+    out << "  " << counted(v.cut_short, "chain") << " ended early: " << (v.cut_short == 1 ? "its" : "their")
+        << " next world leaves the double range"
         << (o.profile == Profile::literal ? " or the literal domain" : "") << "\n";
   if (!o.save.empty()) {
     out << "  corpus: " << counted(v.replayed, "stored counterexample") << " replayed from "

@@ -2,6 +2,7 @@
 // message naming the option and the value, before any case runs and without writing anything; a run prints its
 // verdict and writes its reports whole, or exits 2 and leaves no file behind.
 #include "cli/conform_command.hpp"
+#include "cli/conform_report.hpp"
 
 #include "conform/engines.hpp"
 #include "tests/temp_dir.hpp"
@@ -81,7 +82,8 @@ TEST(ConformCommand, threads_with_a_program_exit_2_as_the_program_runs_its_own) 
   options.threads = 2;
   options.threads_given = true;
   expect_exit_2(options,
-                 "circles conform: --threads sets the threads of an --engine; a program given with --exec runs its own\n");
+                 "circles conform: --threads sets the threads of an --engine; a program given with --exec runs its "
+                 "own\n");
 }
 
 TEST(ConformCommand, the_default_engine_not_given_does_not_exclude_a_program) {
@@ -130,7 +132,8 @@ TEST(ConformCommand, families_check_only_those_and_skip_the_others) {
   const Printed r = run(options);
   EXPECT_EQ(r.status, 0) << r.err;
   // Lattice's one case of the 17, its family's only case in one round.
-  EXPECT_EQ(first_line(r.out), "circles conform: the double engine conforms: 1 case, level exact, seed 2, resolved profile");
+  EXPECT_EQ(first_line(r.out),
+            "circles conform: the double engine conforms: 1 case, level exact, seed 2, resolved profile");
   EXPECT_NE(r.out.find("\n  lattice             1       passed\n"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("\n  random-doubles      0       skipped\n"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("\n  families: 1 passed, 16 skipped\n"), std::string::npos) << r.out;
@@ -158,7 +161,8 @@ TEST(ConformCommand, an_expectation_file_that_does_not_parse_exits_2_naming_its_
   ConformCommandOptions options = double_engine();
   options.expect = dir.write("bad.expect", "# known failures\n\nfail rounding\n");
   expect_exit_2(options,
-                "circles conform: --expect: " + options.expect + ":3: the entry names no family: expected FAMILY fail REASON\n");
+                "circles conform: --expect: " + options.expect +
+                    ":3: the entry names no family: expected FAMILY fail REASON\n");
 }
 
 TEST(ConformCommand, a_missing_expectation_file_exits_2_naming_it) {
@@ -189,7 +193,34 @@ TEST(ConformCommand, one_case_is_counted_in_the_singular) {
   options.keep_going = true;
   r = run(options);
   EXPECT_EQ(r.status, 0) << r.err;
-  EXPECT_EQ(first_line(r.out), "circles conform: the double engine conforms: 1 case, level exact, seed 2, resolved profile");
+  EXPECT_EQ(first_line(r.out),
+            "circles conform: the double engine conforms: 1 case, level exact, seed 2, resolved profile");
+}
+
+TEST(ConformCommand, one_case_skipped_and_one_chain_cut_short_are_counted_in_the_singular) {
+  conform::Verdict v;
+  v.candidate = "the double engine";
+  v.cases = 17;
+  v.options.cases = 17;
+  v.options.seed = 2;
+  std::ostringstream out, err;
+  const auto printed = [&](std::uint64_t n) {
+    v.skipped = v.cut_short = n;
+    out.str("");
+    EXPECT_EQ(print_verdict(v, "", out, err), 0);
+    return out.str();
+  };
+  EXPECT_EQ(printed(1),
+            "circles conform: the double engine conforms: 17 cases (1 skipped: its next world leaves the double "
+            "range), 1 step each, level exact, seed 2, resolved profile\n"
+            "  cases checked per family:\n"
+            "  1 chain ended early: its next world leaves the double range\n");
+  EXPECT_EQ(printed(2),
+            "circles conform: the double engine conforms: 17 cases (2 skipped: their next world leaves the double "
+            "range), 1 step each, level exact, seed 2, resolved profile\n"
+            "  cases checked per family:\n"
+            "  2 chains ended early: their next world leaves the double range\n");
+  EXPECT_EQ(err.str(), "");
 }
 
 TEST(ConformCommand, a_family_listed_as_failing_that_passes_fails_the_run_with_its_line) {
@@ -257,7 +288,8 @@ TEST(ConformCommand, an_expectation_file_is_written_and_named_or_exits_2_leaving
   r = run(options);
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.out.find("expectations: " + options.write_expect), std::string::npos) << r.out;
-  EXPECT_EQ(r.err.rfind("circles conform: --write-expect " + options.write_expect + ": cannot create ", 0), 0u) << r.err;
+  EXPECT_EQ(r.err.rfind("circles conform: --write-expect " + options.write_expect + ": cannot create ", 0), 0u)
+      << r.err;
   EXPECT_EQ(dir.files(), std::vector<std::string>{"double.expect"});
 }
 
