@@ -21,6 +21,11 @@ using formats::Circles;
 using properties::Profile;
 namespace json_number = formats::json_number;
 
+// "1 case", "0 cases", "2 cases".
+std::string counted(std::uint64_t n, const std::string& noun) {
+  return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
+}
+
 void print_world(std::ostream& out, const std::string& title, const Circles& w) {
   out << "  " << title << ":\n";
   for (std::size_t k = 0; k < w.size(); ++k) {
@@ -121,9 +126,11 @@ void print_families(std::ostream& out, std::span<const conform::FamilyResult> fa
 
 void print_conforms(const Verdict& v, std::ostream& out) {
   const conform::Options& o = v.options;
-  out << "circles conform: " << v.candidate << " conforms: " << v.cases << " cases";
-  if (v.skipped) out << " (" << v.skipped << " skipped: their next world leaves the double range)";
-  out << ", " << o.steps << " step" << (o.steps == 1 ? "" : "s") << " each";
+  out << "circles conform: " << v.candidate << " conforms: " << counted(v.cases, "case");
+  if (v.skipped)
+    out << " (" << v.skipped << " skipped: " << (v.skipped == 1 ? "its" : "their")
+        << " next world leaves the double range)";
+  out << ", " << counted(o.steps, "step") << " each";
   std::string longer;  // "tangent-after-step 2": the families chained further, to the step that decides them
   for (const conform::FamilyResult& f : v.families)
     if (f.checked > 0 && properties::steps_to_decide(f.family) > o.steps)
@@ -135,10 +142,11 @@ void print_conforms(const Verdict& v, std::ostream& out) {
   out << "\n";
   if (v.cases > 0) print_families(out, v.families);
   if (v.cut_short)
-    out << "  " << v.cut_short << " chains ended early: their next world leaves the double range"
+    out << "  " << counted(v.cut_short, "chain") << " ended early: " << (v.cut_short == 1 ? "its" : "their")
+        << " next world leaves the double range"
         << (o.profile == Profile::literal ? " or the literal domain" : "") << "\n";
   if (!o.save.empty()) {
-    out << "  corpus: " << v.replayed << " stored counterexample" << (v.replayed == 1 ? "" : "s") << " replayed from "
+    out << "  corpus: " << counted(v.replayed, "stored counterexample") << " replayed from "
         << o.save.string();
     if (v.not_replayed)
       out << " (" << v.not_replayed << " not: no expected answer"
@@ -153,7 +161,7 @@ void print_conforms(const Verdict& v, std::ostream& out) {
 // counterexample in one line (the field, expected, got, which decision) and its replay line.
 void print_table(const Verdict& v, std::ostream& out) {
   const conform::Options& o = v.options;
-  out << "circles conform: " << v.candidate << " " << name(v.outcome) << ": " << v.cases << " cases, level "
+  out << "circles conform: " << v.candidate << " " << name(v.outcome) << ": " << counted(v.cases, "case") << ", level "
       << o.level.text() << ", seed " << o.seed << ", " << properties::name(o.profile) << " profile";
   if (o.shards > 1) out << ", shard " << o.shard << "/" << o.shards;
   out << "\n";

@@ -1,16 +1,13 @@
 // The `circles` program. With no subcommand it runs the main job on the embedded default scene: the oracle's
 // report, then every engine checked against the correctly rounded oracle step by step.
 #include "cli/check_trace_command.hpp"
-#include "cli/conform_report.hpp"
+#include "cli/conform_command.hpp"
 #include "cli/oracle_report.hpp"
 #include "cli/report.hpp"
-#include "conform/candidate.hpp"
-#include "conform/check_trace.hpp"
-#include "conform/conform.hpp"
-#include "conform/engines.hpp"
-#include "conform/expect.hpp"
 #include "cli/run.hpp"
 #include "cli/vectors.hpp"
+#include "conform/check_trace.hpp"
+#include "conform/engines.hpp"
 #include "conform/serve.hpp"
 #include "formats/scene.hpp"
 
@@ -18,16 +15,11 @@
 
 #include <unistd.h>
 
-#include <algorithm>
-#include <cmath>
 #include <csignal>
-#include <optional>
-#include <filesystem>
 #include <cstdint>
-#include <tuple>
 #include <iostream>
 #include <limits>
-#include <memory>
+#include <optional>
 #include <random>
 
 namespace {
@@ -137,18 +129,18 @@ int main(int argc, char** argv) {
   run->add_flag("--fit", fit, "Scale and centre the frames to hold every circle of every frame (default: 1 unit = 1 pixel)");
   run->add_flag("--stats", stats, "Also print the run's figures: steps, circles, engine, threads, times, ns per circle-step");
 
-  std::string exec, level = "exact", shard = "0/1", profile = "resolved", save_dir, svg_file;
-  circles::conform::Options conform_options;
+  circles::cli::ConformCommandOptions conform_options;
   conform_options.seed = std::random_device{}();
-  double timeout = 10;
-  std::uint64_t only_case = 0;
   CLI::App* conform = app.add_subcommand(
       "conform",
       "Check an engine (--engine) or any program speaking the step protocol (--exec) against the oracle; exits 0 "
       "(conforms), 1 (a counterexample) or 2 (cannot check) (docs/conform.md)");
-  add_engine_options(conform, engine_name, threads);
-  conform->add_option("--exec", exec, "Check this program instead, run as /bin/sh -c COMMAND (docs/protocol.md)");
-  conform->add_option("--level", level, "exact (the nearest double), faithful (1 ulp) or ulps:K; decisions always exact")
+  add_engine_options(conform, conform_options.engine, conform_options.threads);
+  conform->add_option("--exec", conform_options.exec,
+                      "Check this program instead, run as /bin/sh -c COMMAND (docs/protocol.md)");
+  conform
+      ->add_option("--level", conform_options.level,
+                   "exact (the nearest double), faithful (1 ulp) or ulps:K; decisions always exact")
       ->capture_default_str();
   // --cases and --case up to 2^63 - 1, as the counts of run and vectors: CLI11 reads "-1" as 2^64 - 1 (strtoull),
   // which as --cases would run for ever and as --case would check no case at all (I + 1 wraps to 0) and conform.
@@ -160,34 +152,35 @@ int main(int argc, char** argv) {
   conform->add_option("--steps", conform_options.steps, "Steps chained per world, the candidate fed its own answers")
       ->capture_default_str()
       ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1000000}));
-  conform->add_option("--profile", profile,
+  conform->add_option("--profile", conform_options.profile,
                        "resolved, or literal (only worlds where the seed's step is defined, checked against it)")
       ->capture_default_str();
-  conform->add_option("--shard", shard,
+  conform->add_option("--shard", conform_options.shard,
                       "Check only the rounds q (of one case per family) with q mod n == i, for parallel jobs")
       ->capture_default_str();
-  conform->add_option("--save", save_dir,
+  conform->add_option("--save", conform_options.save,
                       "Replay every counterexample stored in DIR first, and store a new one there (with its picture)");
-  conform->add_option("--svg", svg_file,
+  conform->add_option("--svg", conform_options.svg,
                       "Draw a counterexample's picture in FILE (default: beside it in --save DIR, else none)");
-  conform->add_option("--timeout", timeout, "Seconds to wait for each answer")
+  conform->add_option("--timeout", conform_options.timeout, "Seconds to wait for each answer")
       ->capture_default_str()
       ->check(CLI::Range(0.001, 3600.0));
-  CLI::Option* case_option = conform->add_option("--case", only_case, "Check only this case (to replay a counterexample)")
-                                  ->check(CLI::Range(std::uint64_t{0}, kMaxCases));
-  std::string report_file, junit_file;
-  conform->add_option("--report", report_file, "Also write the verdict as JSON to FILE (docs/conform.md, Reports for CI)");
-  conform->add_option("--junit", junit_file, "Also write the verdict as JUnit XML to FILE, a test case per family");
+  conform->add_option("--case", conform_options.only_case, "Check only this case (to replay a counterexample)")
+      ->check(CLI::Range(std::uint64_t{0}, kMaxCases));
+  conform->add_option("--report", conform_options.report,
+                      "Also write the verdict as JSON to FILE (docs/conform.md, Reports for CI)");
+  conform->add_option("--junit", conform_options.junit,
+                      "Also write the verdict as JUnit XML to FILE, a test case per family");
   conform->add_flag("--keep-going", conform_options.keep_going,
                     "Check every family, shrink a counterexample per failing family, and print a row per family");
-  std::string only_families, skip_families, expect_file, write_expect_file;
-  CLI::Option* families_option =
-      conform->add_option("--families", only_families, "Check only these families, A,B,... (docs/conform.md)");
-  conform->add_option("--skip-families", skip_families, "Check every family but these, A,B,...")->excludes(families_option);
-  conform->add_option("--expect", expect_file,
+  CLI::Option* families_option = conform->add_option("--families", conform_options.families,
+                                                     "Check only these families, A,B,... (docs/conform.md)");
+  conform->add_option("--skip-families", conform_options.skip_families, "Check every family but these, A,B,...")
+      ->excludes(families_option);
+  conform->add_option("--expect", conform_options.expect,
                       "Known failures, FAMILY fail REASON a line: failing them passes, passing them fails (implies "
                       "--keep-going)");
-  conform->add_option("--write-expect", write_expect_file,
+  conform->add_option("--write-expect", conform_options.write_expect,
                       "Write this run's failing families to FILE as an expectation file (implies --keep-going)");
 
   CLI::App* report = app.add_subcommand("report", "Work with the JSON reports of circles conform --report");
@@ -246,85 +239,12 @@ int main(int argc, char** argv) {
     if (*check_trace)
       return check_trace_command(trace_file, trace_reference(trace_engine), std::cout, std::cerr);
     if (*conform) {
-      try {
-        conform_options.level = circles::properties::parse_level(level);
-        conform_options.profile = circles::properties::parse_profile(profile);
-        std::tie(conform_options.shard, conform_options.shards) = circles::conform::parse_shard(shard);
-        if (conform->count("--families") > 0) {
-          const auto only = parse_families("--families", only_families, conform_options.profile);
-          for (const circles::properties::Family f : circles::properties::families(conform_options.profile))
-            if (std::find(only.begin(), only.end(), f) == only.end()) conform_options.skip.push_back(f);
-        }
-        if (conform->count("--skip-families") > 0)
-          conform_options.skip = parse_families("--skip-families", skip_families, conform_options.profile);
-      } catch (const std::invalid_argument& e) {
-        std::cerr << "circles conform: " << e.what() << "\n";
-        return 2;
-      }
-      if (!exec.empty() && conform->count("--engine") > 0) {
-        std::cerr << "circles conform: --engine and --exec exclude each other: check one candidate at a time\n";
-        return 2;
-      }
-      if (!exec.empty() && conform->count("--threads") > 0) {
-        std::cerr << "circles conform: --threads sets the threads of an --engine; a program given with --exec runs "
-                     "its own\n";
-        return 2;
-      }
-      if (*case_option) conform_options.only_case = only_case;
-      std::optional<Expectations> expectations;
-      try {
-        if (!expect_file.empty()) expectations = read_expectations(expect_file, conform_options.profile);
-      } catch (const ExpectError& e) {
-        std::cerr << "circles conform: --expect: " << e.what() << "\n";
-        return 2;
-      }
-      if (expectations || !write_expect_file.empty()) conform_options.keep_going = true;
-      conform_options.save = save_dir;
-      // A --svg file that cannot be written is a usage error, found before any case runs.
-      if (const std::filesystem::path svg = svg_file; !svg.empty()) {
-        const std::filesystem::path parent = svg.parent_path().empty() ? "." : svg.parent_path();
-        if (!std::filesystem::is_directory(parent)) {
-          std::cerr << "circles conform: --svg: cannot write " << svg.string() << ": the directory " << parent.string()
-                    << " does not exist\n";
-          return 2;
-        }
-      }
-      try {
-        std::unique_ptr<Candidate> candidate;
-        Verdict verdict;
-        try {
-          if (exec.empty())
-            candidate = std::make_unique<EngineCandidate>(engine(engine_name), threads);
-          else
-            candidate = std::make_unique<ProcessCandidate>(
-                exec, std::chrono::milliseconds(static_cast<long long>(std::ceil(timeout * 1000))));
-          verdict = circles::conform::check(*candidate, conform_options);
-        } catch (const BrokenCandidate& e) {  // it could not start: a verdict too, for the reports
-          verdict = unchecked("the program `" + exec + "`", conform_options, e.what());
-        }
-        if (expectations) apply(verdict, *expectations);
-        int status = print_verdict(verdict, svg_file, std::cout, std::cerr);
-        if (expectations && verdict.outcome != Outcome::cannot_check)
-          for (const std::string& line : unexpected_passes(verdict, *expectations)) std::cout << line << "\n";
-        // The reports for CI, for every verdict; a report that cannot be written makes the run's status 2.
-        const std::string text = counterexample_text(verdict);
-        try {
-          if (!report_file.empty()) write_report(report_file, "--report", json_report(verdict, text));
-          if (!junit_file.empty()) write_report(junit_file, "--junit", junit_report(verdict, text));
-          // The expectation file of a run that could check, whole or not at all.
-          if (!write_expect_file.empty() && verdict.outcome != Outcome::cannot_check) {
-            write_report(write_expect_file, "--write-expect", expectations_text(verdict));
-            std::cout << "expectations: " << write_expect_file << "\n";
-          }
-        } catch (const OutputError& e) {
-          std::cerr << "circles conform: " << e.what() << "\n";
-          return 2;
-        }
-        return status;
-      } catch (const ConformError& e) {
-        std::cerr << "circles conform: " << e.what() << "\n";
-        return 2;
-      }
+      conform_options.engine_given = conform->count("--engine") > 0;
+      conform_options.threads_given = conform->count("--threads") > 0;
+      conform_options.case_given = conform->count("--case") > 0;
+      conform_options.families_given = conform->count("--families") > 0;
+      conform_options.skip_families_given = conform->count("--skip-families") > 0;
+      return circles::cli::conform_command(conform_options, std::cout, std::cerr);
     }
     const bool from_file = !scene_path.empty(), random = random_options.circles > 0;
     const auto& [n, coverage, seed] = random_options;

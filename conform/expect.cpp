@@ -125,7 +125,7 @@ std::vector<std::string> unexpected_passes(const Verdict& verdict, const Expecta
   for (const FamilyResult& f : verdict.families)
     if (f.status == FamilyStatus::unexpected_pass)
       lines.push_back(std::string(properties::name(f.family)) + ": unexpected pass (" + std::to_string(f.checked) +
-                      " cases checked): delete its line, " + expectations.file.string() + ":" +
+                      (f.checked == 1 ? " case" : " cases") + " checked): delete its line, " + expectations.file.string() + ":" +
                       std::to_string(expectations.find(f.family)->line));
   return lines;
 }

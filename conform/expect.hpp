@@ -50,7 +50,7 @@ Expectations read_expectations(const std::filesystem::path& file, Profile profil
 void apply(Verdict& verdict, const Expectations& expectations);
 
 // The lines of an unexpected pass, one per family: "FAMILY: unexpected pass (N cases checked): delete its line,
-// FILE:LINE".
+// FILE:LINE" ("1 case checked" for one).
 std::vector<std::string> unexpected_passes(const Verdict& verdict, const Expectations& expectations);
 
 // The expectation file of the verdict's failures (failed and expected failure), each with the summary of its

@@ -1,0 +1,130 @@
+#include "cli/conform_command.hpp"
+
+#include "cli/conform_report.hpp"
+#include "cli/report.hpp"
+#include "conform/candidate.hpp"
+#include "conform/conform.hpp"
+#include "conform/engines.hpp"
+#include "conform/expect.hpp"
+#include "formats/output_file.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <tuple>
+
+namespace circles::cli {
+namespace {
+
+using conform::Outcome;
+using conform::Verdict;
+
+// The options of conform::check from the strings given. Throws std::invalid_argument naming the option.
+conform::Options check_options(const ConformCommandOptions& given) {
+  conform::Options options;
+  options.cases = given.cases;
+  options.seed = given.seed;
+  options.steps = given.steps;
+  options.keep_going = given.keep_going;
+  options.level = properties::parse_level(given.level);
+  options.profile = properties::parse_profile(given.profile);
+  std::tie(options.shard, options.shards) = conform::parse_shard(given.shard);
+  if (given.families_given) {
+    const auto only = conform::parse_families("--families", given.families, options.profile);
+    for (const properties::Family f : properties::families(options.profile))
+      if (std::find(only.begin(), only.end(), f) == only.end()) options.skip.push_back(f);
+  }
+  if (given.skip_families_given)
+    options.skip = conform::parse_families("--skip-families", given.skip_families, options.profile);
+  return options;
+}
+
+// The verdict on the candidate the options name: an engine, or the program of --exec (one that cannot start is
+// a verdict too, for the reports). Throws ConformError and UnknownEngine.
+Verdict verdict_of(const ConformCommandOptions& given, const conform::Options& options) {
+  try {
+    std::unique_ptr<conform::Candidate> candidate;
+    if (given.exec.empty())
+      candidate = std::make_unique<conform::EngineCandidate>(conform::engine(given.engine), given.threads);
+    else
+      candidate = std::make_unique<conform::ProcessCandidate>(
+          given.exec, std::chrono::milliseconds(static_cast<long long>(std::ceil(given.timeout * 1000))));
+    return conform::check(*candidate, options);
+  } catch (const conform::BrokenCandidate& e) {
+    return conform::unchecked("the program `" + given.exec + "`", options, e.what());
+  }
+}
+
+}  // namespace
+
+int conform_command(const ConformCommandOptions& given, std::ostream& out, std::ostream& err) {
+  conform::Options options;
+  try {
+    options = check_options(given);
+  } catch (const std::invalid_argument& e) {
+    err << "circles conform: " << e.what() << "\n";
+    return 2;
+  }
+  if (!given.exec.empty() && given.engine_given) {
+    err << "circles conform: --engine and --exec exclude each other: check one candidate at a time\n";
+    return 2;
+  }
+  if (!given.exec.empty() && given.threads_given) {
+    err << "circles conform: --threads sets the threads of an --engine; a program given with --exec runs its own\n";
+    return 2;
+  }
+  if (given.case_given) options.only_case = given.only_case;
+  std::optional<conform::Expectations> expectations;
+  try {
+    if (!given.expect.empty()) expectations = conform::read_expectations(given.expect, options.profile);
+  } catch (const conform::ExpectError& e) {
+    err << "circles conform: --expect: " << e.what() << "\n";
+    return 2;
+  }
+  if (expectations || !given.write_expect.empty()) options.keep_going = true;
+  options.save = given.save;
+  // A --svg file that cannot be written is a usage error, found before any case runs.
+  if (const std::filesystem::path svg = given.svg; !svg.empty()) {
+    const std::filesystem::path parent = svg.parent_path().empty() ? "." : svg.parent_path();
+    if (!std::filesystem::is_directory(parent)) {
+      err << "circles conform: --svg: cannot write " << svg.string() << ": the directory " << parent.string()
+          << " does not exist\n";
+      return 2;
+    }
+  }
+  Verdict verdict;
+  try {
+    verdict = verdict_of(given, options);
+  } catch (const conform::ConformError& e) {
+    err << "circles conform: " << e.what() << "\n";
+    return 2;
+  } catch (const conform::UnknownEngine& e) {  // the program's --engine refuses it while parsing
+    err << "circles conform: " << e.what() << "\n";
+    return 2;
+  }
+  if (expectations) conform::apply(verdict, *expectations);
+  const int status = print_verdict(verdict, given.svg, out, err);
+  if (expectations && verdict.outcome != Outcome::cannot_check)
+    for (const std::string& line : conform::unexpected_passes(verdict, *expectations)) out << line << "\n";
+  // The reports for CI, for every verdict; a report that cannot be written makes the run's status 2.
+  const std::string text = counterexample_text(verdict);
+  try {
+    if (!given.report.empty()) write_report(given.report, "--report", json_report(verdict, text));
+    if (!given.junit.empty()) write_report(given.junit, "--junit", junit_report(verdict, text));
+    // The expectation file of a run that could check, whole or not at all.
+    if (!given.write_expect.empty() && verdict.outcome != Outcome::cannot_check) {
+      write_report(given.write_expect, "--write-expect", conform::expectations_text(verdict));
+      out << "expectations: " << given.write_expect << "\n";
+    }
+  } catch (const formats::OutputError& e) {
+    err << "circles conform: " << e.what() << "\n";
+    return 2;
+  }
+  return status;
+}
+
+}  // namespace circles::cli

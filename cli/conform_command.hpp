@@ -1,0 +1,54 @@
+// `circles conform`: the options as the command line gave them, and the command itself (docs/conform.md).
+//
+// main() only declares the options (CLI11) and calls conform_command; everything after parsing is here, so that
+// tests run the command in process: the checks of the options' values and of the options that exclude each
+// other, the expectation file, the candidate (an engine or a program), conform::check, the expectations
+// applied, the verdict printed (cli/conform_report.hpp) and the reports for CI written (cli/report.hpp).
+#pragma once
+
+#include <cstdint>
+#include <ostream>
+#include <string>
+
+namespace circles::cli {
+
+// What the command line gave, as given: the strings unparsed, and which options were given at all where that
+// matters (an --engine given with --exec is refused, and the default engine is not).
+struct ConformCommandOptions {
+  std::string engine = "double";  // --engine NAME, one of conform/engines.hpp
+  bool engine_given = false;
+  unsigned threads = 0;           // --threads T of the engine (0: all cores)
+  bool threads_given = false;
+  std::string exec;               // --exec COMMAND: check this program instead of an engine ("" for none)
+  double timeout = 10;            // --timeout: seconds to wait for each answer of the program
+  std::string level = "exact";    // --level: exact, faithful or ulps:K (properties::parse_level)
+  std::string profile = "resolved";  // --profile: resolved or literal
+  std::string shard = "0/1";      // --shard i/n
+  std::uint64_t cases = 1000;     // --cases
+  std::uint64_t seed = 1;         // --seed (the program draws a random one when it is not given)
+  std::uint64_t steps = 1;        // --steps chained per case
+  std::uint64_t only_case = 0;    // --case I, when case_given
+  bool case_given = false;
+  std::string families;           // --families A,B,..., when families_given
+  bool families_given = false;
+  std::string skip_families;      // --skip-families A,B,..., when skip_families_given
+  bool skip_families_given = false;
+  bool keep_going = false;        // --keep-going
+  std::string save;               // --save DIR ("" for none)
+  std::string svg;                // --svg FILE ("" for none)
+  std::string report;             // --report FILE.json ("" for none)
+  std::string junit;              // --junit FILE.xml ("" for none)
+  std::string expect;             // --expect FILE ("" for none); implies keep_going
+  std::string write_expect;       // --write-expect FILE ("" for none); implies keep_going
+};
+
+// The command. Prints the verdict on `out` (or, when it cannot check, its reason on `err`), then the unexpected
+// passes of --expect and "expectations: FILE" for --write-expect, and writes the reports, each whole or not at
+// all. Returns the exit status: 0 (conforms), 1 (a counterexample, or a family against its expectation) or 2
+// (cannot check). Options that cannot be used give 2 before any case runs, with "circles conform: reason" on
+// `err`: a bad --level, --profile, --shard, --families or --skip-families, --engine or --threads with --exec, an
+// unknown engine, an --expect file that cannot be read or parsed, an --svg file in a directory that does not
+// exist, a --save directory that cannot be used. A report that cannot be written also makes the status 2.
+int conform_command(const ConformCommandOptions& options, std::ostream& out, std::ostream& err);
+
+}  // namespace circles::cli
