@@ -196,16 +196,21 @@ struct PrefetchCircles {
 // first step is ≤ j; rebuilding costs about kRebuildCost pair tests per circle (a rebuild of n circles, keys,
 // sort, gather and query, takes about as long as that many pair tests per circle: measured with
 // `circles run --stats` on the random scenes of 0.1% and 10% coverage, where the best fixed horizons were
-// 16 and 4 to 8). The horizon doubles while the pair tests of a step
-// cost less than half the rebuild's share of it, n·kRebuildCost/(H + 1), and halves when they cost more than
-// twice it, which keeps the two near balance, where their sum is least to within a small factor. It starts
-// at kFirstHorizon and doubles at most (growing fourfold overshot on sparse scenes: from 16 to 64, where the
-// far pairs' tests miss the cache). Only counts decide it, never time, so a run is the same on every machine.
+// 16 to 32 and 4 to 8). The horizon doubles while the pair tests of a step cost less than half the rebuild's
+// share of it, n·kRebuildCost/(H + 1), and halves when they cost more than twice it, which keeps the two near
+// balance, where their sum is least to within a small factor. Where they cost less than 1/kFarBelow of the
+// share it grows fourfold instead: doubling H at most multiplies the pairs within reach by 4 (the skin
+// doubles) and each one's tests by about 2, so the tests of a step grow at most eightfold per doubling, and
+// 16 times too few is at least two doublings from balance. It starts at kFirstHorizon, where the 10% scene
+// settles (at 10^6 circles 8 measured faster than 4); the 0.1% scene grows fourfold once, 8 to 32, where it
+// settles, instead of doubling three times from 4 with a re-sort each (at 10^6 circles its first list's tests
+// are 1/57 of the share, those of the lists at 32 about half of it). Only counts decide it, never time, so a run is the same on every machine.
 class HorizonSchedule {
  public:
   static constexpr std::uint64_t kMaxHorizon = std::uint64_t{1} << 16;
-  static constexpr std::uint64_t kFirstHorizon = 4;
+  static constexpr std::uint64_t kFirstHorizon = 8;
   static constexpr double kRebuildCost = 8;
+  static constexpr double kFarBelow = 16;
 
   std::uint64_t horizon() const noexcept { return horizon_; }
   // After a list whose tests over its horizon() + 1 steps add up to `tests` was built for `circles` circles:
@@ -214,7 +219,9 @@ class HorizonSchedule {
     const double steps = static_cast<double>(horizon_ + 1);
     const double per_step = static_cast<double>(tests) / steps;
     const double rebuild = kRebuildCost * static_cast<double>(circles) / steps;
-    if (per_step < rebuild / 2)
+    if (per_step < rebuild / kFarBelow)
+      horizon_ = std::min(kMaxHorizon, horizon_ == 0 ? 1 : 4 * horizon_);
+    else if (per_step < rebuild / 2)
       horizon_ = std::min(kMaxHorizon, horizon_ == 0 ? 1 : 2 * horizon_);
     else if (per_step > 2 * rebuild)
       horizon_ /= 2;

@@ -239,24 +239,32 @@ TEST(pair_list, every_horizon_and_thread_count_gives_the_same_bits_on_a_busy_wor
     }
 }
 
-TEST(pair_list, the_schedule_lengthens_the_horizon_while_pairs_are_cheap_and_shortens_it_when_they_are_not) {
+TEST(pair_list, the_schedule_grows_fourfold_far_below_balance_twofold_below_half_and_halves_above_twice) {
   HorizonSchedule s;
   EXPECT_EQ(s.horizon(), HorizonSchedule::kFirstHorizon);
-  ASSERT_EQ(s.horizon(), 4u);
-  // At H = 4 a rebuild of 1000 circles costs 8·1000/5 = 1600 pair tests a step. No pairs: below half, ×2
-  // (never more, however far below: a fourfold jump overshoots into far pairs).
+  ASSERT_EQ(s.horizon(), 8u);
+  // At H = 8 a rebuild of 1000 circles costs 8·1000/9 ≈ 889 pair tests a step. No pairs: far below a
+  // sixteenth of that, ×4.
   s.update(0, 1000);
-  EXPECT_EQ(s.horizon(), 8u);
-  s.update(0, 1000);
-  EXPECT_EQ(s.horizon(), 16u);
-  // At H = 16 the share is 8000/17 ≈ 471 a step: 200 a step (3400 over the 17 steps) is below half, ×2.
-  s.update(3400, 1000);
+  ASSERT_EQ(s.horizon(), 32u);
+  // At H = 32 the share is 8000/33 a step, its sixteenth 500/33: 499 tests over the 33 steps are below it, ×4;
+  // 500 are the same double, not below, ×2 (below half, 4000/33).
+  HorizonSchedule far = s;
+  far.update(499, 1000);
+  EXPECT_EQ(far.horizon(), 128u);
+  s.update(500, 1000);
+  ASSERT_EQ(s.horizon(), 64u);
+  // At H = 64 the share is 8000/65: 3999 tests over the 65 steps are below half of it, ×2; 4000 are not, and
+  // not above twice it either, kept; 16,000 are twice it, kept; 16,001 are above, halved.
+  HorizonSchedule below_half = s;
+  below_half.update(3999, 1000);
+  EXPECT_EQ(below_half.horizon(), 128u);
+  s.update(4000, 1000);
+  EXPECT_EQ(s.horizon(), 64u);
+  s.update(16000, 1000);
+  EXPECT_EQ(s.horizon(), 64u);
+  s.update(16001, 1000);
   EXPECT_EQ(s.horizon(), 32u);
-  // At H = 32 the share is 8000/33 ≈ 242: 200 a step is within a factor 2, kept; 600 is too many, halved.
-  s.update(200 * 33, 1000);
-  EXPECT_EQ(s.horizon(), 32u);
-  s.update(600 * 33, 1000);
-  EXPECT_EQ(s.horizon(), 16u);
   for (int i = 0; i < 40; ++i) s.update(0, 1000);
   EXPECT_EQ(s.horizon(), HorizonSchedule::kMaxHorizon);
   s.collapse();
