@@ -199,12 +199,14 @@ struct PrefetchCircles {
 // 16 to 32 and 4 to 8). The horizon doubles while the pair tests of a step cost less than half the rebuild's
 // share of it, n·kRebuildCost/(H + 1), and halves when they cost more than twice it, which keeps the two near
 // balance, where their sum is least to within a small factor. Where they cost less than 1/kFarBelow of the
-// share it grows fourfold instead: doubling H at most multiplies the pairs within reach by 4 (the skin
-// doubles) and each one's tests by about 2, so the tests of a step grow at most eightfold per doubling, and
-// 16 times too few is at least two doublings from balance. It starts at kFirstHorizon, where the 10% scene
-// settles (at 10^6 circles 8 measured faster than 4); the 0.1% scene grows fourfold once, 8 to 32, where it
-// settles, instead of doubling three times from 4 with a re-sort each (at 10^6 circles its first list's tests
-// are 1/57 of the share, those of the lists at 32 about half of it). Only counts decide it, never time, so a run is the same on every machine.
+// share it grows fourfold instead. Each doubling halves the share and multiplies the tests of a step by the
+// growth of the pairs within reach and of their tests: in the 0.1% scene the ratio of tests to share went
+// from 1/57 at H = 8 to 1/1.8 at 32, about 5.6 per doubling, so from 1/16 two doublings land near balance.
+// A scene whose tests grow faster can overshoot once (at most 16 times per doubling, pairs in reach × 4 and
+// their tests × 2, with the share halved); the halving then brings it back. It is speed only, never a bit of
+// a world. It starts at kFirstHorizon, where the 10% scene settles (at 10^6 circles 8 measured faster than
+// 4); the 0.1% scene grows fourfold once, 8 to 32, where it settles, instead of doubling three times from 4
+// with a re-sort each. Only counts decide it, never time, so a run is the same on every machine.
 class HorizonSchedule {
  public:
   static constexpr std::uint64_t kMaxHorizon = std::uint64_t{1} << 16;
