@@ -322,8 +322,20 @@ void ExactEngine::step() {
 
 template <class Int>
 bool ExactEngine::precedes(const Columns<Int>& s, std::size_t a, std::size_t b) const noexcept {
-  // (7) on integers scaled by D > 0 or L > 0: the same order as the rationals, then the index.
-  for (const std::vector<Int>* field : {&s.x, &s.y, &s.vx, &s.vy}) {
+  // (7) on integers scaled by D > 0 or L > 0: the same order as the rationals, then the index. The centre's
+  // coordinates are compared by their approximations first (filtered): exact::approximate is monotone in the
+  // integer (RN of the integer, or of its truncated mantissa and exponent, times or over the one positive
+  // denominator; RN, truncation and scaling by a power of 2 keep order), so a < between approximations is a <
+  // between the integers, and only equal approximations read the integers, which the pair test did not load.
+  // least_contacts compares slots of intersecting listed pairs only, whose approximations update() keeps fresh.
+  const Approximations& near = approx_;
+  for (const auto& [approximation, field] : {std::pair{&near.x, &s.x}, std::pair{&near.y, &s.y}}) {
+    if ((*approximation)[a] < (*approximation)[b]) return true;
+    if ((*approximation)[b] < (*approximation)[a]) return false;
+    if ((*field)[a] < (*field)[b]) return true;
+    if ((*field)[b] < (*field)[a]) return false;
+  }
+  for (const std::vector<Int>* field : {&s.vx, &s.vy}) {
     if ((*field)[a] < (*field)[b]) return true;
     if ((*field)[b] < (*field)[a]) return false;
   }

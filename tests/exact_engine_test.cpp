@@ -133,6 +133,20 @@ TEST(exact_engine, meets_exactly_at_the_designed_tangency_and_not_one_step_befor
   EXPECT_EQ(engine.exact()[1].v, Vec2(spec::Q(3), spec::Q(4)));
 }
 
+TEST(exact_engine, takes_the_contact_of_least_centre_when_two_centres_differ_below_what_their_doubles_resolve) {
+  // c at the origin touches a and b, whose centres differ by 2^-70 in x: their approximations (and nearest
+  // doubles) are equal, so only the integers order them, and a's x is less. b's velocity is less, and b comes
+  // first by index: an order that passed over equal approximations to the velocities, or to the indices,
+  // would give c b's velocity.
+  const spec::Q tiny = spec::Q(1) / spec::Q(Wide(1) << 70);
+  ASSERT_EQ(spec::nearest_double(1 + tiny), 1.0);
+  const spec::Sequence w{spec::circle(0, 0, 0, 0, 2), spec::circle(1 + tiny, 0, -1, 0, 1), spec::circle(1, 0, 5, 0, 1)};
+  ExactEngine engine(w, EngineOptions{.threads = 1});
+  engine.step();
+  EXPECT_EQ(engine.exact()[0].v, Vec2(spec::Q(5), spec::Q(0)));
+  EXPECT_EQ(engine.exact(), spec::resolved_step(w));
+}
+
 TEST(exact_engine, follows_the_oracle_on_the_bundled_scene_and_runs_it_for_10000_steps) {
   const spec::Sequence w0 = formats::default_scene().circles;
   ExactEngine engine(w0, EngineOptions{.threads = 1});
