@@ -221,8 +221,10 @@ struct NeighbourCursor {
   bool column_ready = false, above_ready = false;
 };
 
-// Calls visit_run(begin, end) for runs of consecutive slots [begin, end) that together hold every slot b after
-// a (b > a) in a's forward neighbourhood, once each: at a's level,
+// Calls visit_run(from, last) for runs of consecutive slots, the slots from `from` on whose keys are ≤ last
+// (none when key[from] > last), that together hold every slot b after a (b > a) in a's forward neighbourhood,
+// once each; visit_run visits them and returns the first slot after them (the least slot ≥ from that is the
+// view's size or has a key > last). At a's level,
 //   a's column, from a to the end of the next row when that row is in a's band;
 //   the next column, from one row below a's to one above, within a's band;
 //   when a's row is its band's top row, the next band's bottom row, from one column left of a's to one right;
@@ -236,7 +238,9 @@ struct NeighbourCursor {
 //   different levels: only the lower level's slot searches the higher level.
 // Slots a must be visited in ascending order with one NeighbourCursor. Global circles (level kGlobalLevel)
 // visit nothing and are visited by no one: the caller pairs them with every circle. Runs (at most five at
-// a's level, a few per higher level) let the caller's loop over a run keep a's values in registers;
+// a's level, a few per higher level) let the caller's loop over a run keep a's values in registers; a run
+// bounded by its last key, not by its end, lets that loop find the end as it goes, with one mispredicted
+// exit per run where scanning for the end first and then looping over the run took two.
 // visit_neighbourhood below hands the slots over one by one.
 template <class VisitRun>
 void visit_neighbourhood_runs(const CellGrid& grid, const CellView& view, std::size_t a, NeighbourCursor& cursor,
@@ -249,12 +253,8 @@ void visit_neighbourhood_runs(const CellGrid& grid, const CellView& view, std::s
   const std::uint32_t cx = G::cell_x(k), cy = G::cell_y(k);
   const std::uint32_t row = cy & (G::kBandRows - 1);  // a's row within its band
   const bool band_top = row == G::kBandRows - 1;
-  // The run of slots from `from` on whose keys are ≤ last.
-  const auto run = [&](std::size_t from, CellKey last) {
-    std::size_t end = from;
-    while (end < n && view.key[end] <= last) ++end;
-    if (end > from) visit_run(from, end);
-  };
+  // The run of slots from `from` on whose keys are ≤ last; returns the first slot after it.
+  const auto run = [&](std::size_t from, CellKey last) -> std::size_t { return visit_run(from, last); };
   // A cursor moved forward to the first key ≥ first. Each cursor's `first` only grows with a's key (shown at
   // each use), so a cursor moves over the whole view once: linear in all.
   const auto seek = [&](std::size_t& at, bool& ready, CellKey first) {
@@ -281,7 +281,7 @@ void visit_neighbourhood_runs(const CellGrid& grid, const CellView& view, std::s
     for (std::uint32_t x = x0; x <= x1; ++x) {
       const CellKey cell = G::pack(level, cy + 1, x);
       while (b < n && view.key[b] < cell) ++b;
-      run(b, cell);
+      b = run(b, cell);
     }
   }
   // Each level above: step 4's range, column by column, one run per band, by binary search within the level.
@@ -306,8 +306,10 @@ void visit_neighbourhood_runs(const CellGrid& grid, const CellView& view, std::s
 template <class Visit>
 void visit_neighbourhood(const CellGrid& grid, const CellView& view, std::size_t a, NeighbourCursor& cursor,
                          Visit&& visit) {
-  visit_neighbourhood_runs(grid, view, a, cursor, [&visit](std::size_t begin, std::size_t end) {
-    for (std::size_t b = begin; b < end; ++b) visit(b);
+  visit_neighbourhood_runs(grid, view, a, cursor, [&visit, &view](std::size_t from, CellKey last) {
+    std::size_t b = from;
+    for (; b < view.key.size() && view.key[b] <= last; ++b) visit(b);
+    return b;
   });
 }
 

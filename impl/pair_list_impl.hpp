@@ -56,30 +56,34 @@ inline void PairList::build(const CellGrid& grid, const CellView& view, unsigned
     NeighbourCursor cursor;
     for (std::size_t a = begin; a < end; ++a) {
       const std::size_t bins = (a - begin) / kBlockSlots * kBuckets;
-      visit_neighbourhood_runs(grid, view, a, cursor, [&](std::size_t run_begin, std::size_t run_end) {
+      visit_neighbourhood_runs(grid, view, a, cursor, [&](std::size_t from, CellKey last) {
         // A copy of the lister per run, in registers: the marks are char stores, which may alias anything, so
         // a lister in memory would be read again for every candidate.
         const Lister first_of = first;
-        // The candidates near enough to ask, gathered without a branch, kKept at a time.
+        const CellKey* const key = view.key.data();
+        // The candidates near enough to ask, gathered without a branch, kKept at a time, as the run is found.
         constexpr std::size_t kKept = 64;
         std::uint32_t kept[kKept];
-        for (std::size_t from = run_begin; from < run_end; from += kKept) {
+        std::size_t b = from;
+        for (;;) {
           std::size_t near = 0;
-          for (std::size_t b = from, to = std::min(run_end, from + kKept); b < to; ++b) {
+          const std::size_t stop = std::min(n, b + kKept);
+          for (; b < stop && key[b] <= last; ++b) {
             kept[near] = static_cast<std::uint32_t>(b);
             near += first_of.near(a, b);
           }
           for (std::size_t k = 0; k < near; ++k) {
-            const std::size_t b = kept[k];
-            const std::uint32_t step = first_of(a, b);
+            const std::size_t partner = kept[k];
+            const std::uint32_t step = first_of(a, partner);
             if (step > horizon) continue;
             if (size == found.size()) [[unlikely]]
               found.resize(std::max<std::size_t>(1024, 2 * size));
-            const ListedPair p{static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b), step};
+            const ListedPair p{static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(partner), step};
             found[size++] = p;
             ++count[bins + std::min(step, kBuckets - 1)];
             take(mine, p);
           }
+          if (b < stop || b == n) return b;  // the run ended (a larger key, or the view's end)
         }
       });
     }
