@@ -54,38 +54,44 @@ inline void PairList::build(const CellGrid& grid, const CellView& view, unsigned
     std::size_t size = 0;
     Tally mine{0, horizon + 1};  // a local, kept in registers, written to tally[c] at the end
     NeighbourCursor cursor;
+    // The candidates of a near enough to ask, gathered without a branch from all of a's runs, then listed
+    // together: one loop over them per a, not one per run (its exit mispredicts about once per loop).
+    constexpr std::size_t kKept = 64;
+    std::uint32_t kept[kKept];
     for (std::size_t a = begin; a < end; ++a) {
       const std::size_t bins = (a - begin) / kBlockSlots * kBuckets;
+      const auto list_kept = [&](const Lister& first_of, std::size_t held) {
+        for (std::size_t k = 0; k < held; ++k) {
+          const std::size_t b = kept[k];
+          const std::uint32_t step = first_of(a, b);
+          if (step > horizon) continue;
+          if (size == found.size()) [[unlikely]]
+            found.resize(std::max<std::size_t>(1024, 2 * size));
+          const ListedPair p{static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b), step};
+          found[size++] = p;
+          ++count[bins + std::min(step, kBuckets - 1)];
+          take(mine, p);
+        }
+      };
+      std::size_t kept_so_far = 0;
       visit_neighbourhood_runs(grid, view, a, cursor, [&](std::size_t from, CellKey last) {
-        // A copy of the lister per run, in registers: the marks are char stores, which may alias anything, so
-        // a lister in memory would be read again for every candidate.
+        // A copy of the lister and of the count per run, in registers: the marks are char stores, which may
+        // alias anything, so values in memory would be read again for every candidate.
         const Lister first_of = first;
         const CellKey* const key = view.key.data();
-        // The candidates near enough to ask, gathered without a branch, kKept at a time, as the run is found.
-        constexpr std::size_t kKept = 64;
-        std::uint32_t kept[kKept];
-        std::size_t b = from;
-        for (;;) {
-          std::size_t near = 0;
-          const std::size_t stop = std::min(n, b + kKept);
-          for (; b < stop && key[b] <= last; ++b) {
-            kept[near] = static_cast<std::uint32_t>(b);
-            near += first_of.near(a, b);
+        std::size_t held = kept_so_far, b = from;
+        for (; b < n && key[b] <= last; ++b) {
+          kept[held] = static_cast<std::uint32_t>(b);
+          held += first_of.near(a, b);
+          if (held == kKept) [[unlikely]] {
+            list_kept(first_of, held);
+            held = 0;
           }
-          for (std::size_t k = 0; k < near; ++k) {
-            const std::size_t partner = kept[k];
-            const std::uint32_t step = first_of(a, partner);
-            if (step > horizon) continue;
-            if (size == found.size()) [[unlikely]]
-              found.resize(std::max<std::size_t>(1024, 2 * size));
-            const ListedPair p{static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(partner), step};
-            found[size++] = p;
-            ++count[bins + std::min(step, kBuckets - 1)];
-            take(mine, p);
-          }
-          if (b < stop || b == n) return b;  // the run ended (a larger key, or the view's end)
         }
+        kept_so_far = held;
+        return b;  // the run ended: a larger key, or the view's end
       });
+      list_kept(first, kept_so_far);
     }
     chunk.size = size;
     tally[c] = mine;
