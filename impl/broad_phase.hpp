@@ -253,8 +253,6 @@ void visit_neighbourhood_runs(const CellGrid& grid, const CellView& view, std::s
   const std::uint32_t cx = G::cell_x(k), cy = G::cell_y(k);
   const std::uint32_t row = cy & (G::kBandRows - 1);  // a's row within its band
   const bool band_top = row == G::kBandRows - 1;
-  // The run of slots from `from` on whose keys are ≤ last; returns the first slot after it.
-  const auto run = [&](std::size_t from, CellKey last) -> std::size_t { return visit_run(from, last); };
   // A cursor moved forward to the first key ≥ first. Each cursor's `first` only grows with a's key (shown at
   // each use), so a cursor moves over the whole view once: linear in all.
   const auto seek = [&](std::size_t& at, bool& ready, CellKey first) {
@@ -266,12 +264,12 @@ void visit_neighbourhood_runs(const CellGrid& grid, const CellView& view, std::s
     return at;
   };
   // a's column: the slots after a to the end of the next row, if the band has one.
-  run(a + 1, G::pack(level, band_top ? cy : cy + 1, cx));
+  visit_run(a + 1, G::pack(level, band_top ? cy : cy + 1, cx));
   // The next column, rows cy − 1 … cy + 1 within the band. Its first key (level, band, cx + 1, row − 1 or the
   // band's first row) only grows with a's key (level, band, cx, row).
   if (cx + 1 < G::kCells) {
     const std::uint32_t y0 = row > 0 ? cy - 1 : cy, y1 = band_top ? cy : cy + 1;
-    run(seek(cursor.column, cursor.column_ready, G::pack(level, y0, cx + 1)), G::pack(level, y1, cx + 1));
+    visit_run(seek(cursor.column, cursor.column_ready, G::pack(level, y0, cx + 1)), G::pack(level, y1, cx + 1));
   }
   // The band above, from a band's top row: its bottom row, columns cx − 1 … cx + 1, one run per column. Its
   // first key (level, band + 1, cx − 1, 0) only grows with a's key among the top rows' slots.
@@ -281,7 +279,7 @@ void visit_neighbourhood_runs(const CellGrid& grid, const CellView& view, std::s
     for (std::uint32_t x = x0; x <= x1; ++x) {
       const CellKey cell = G::pack(level, cy + 1, x);
       while (b < n && view.key[b] < cell) ++b;
-      b = run(b, cell);
+      b = visit_run(b, cell);
     }
   }
   // Each level above: step 4's range, column by column, one run per band, by binary search within the level.
@@ -295,8 +293,8 @@ void visit_neighbourhood_runs(const CellGrid& grid, const CellView& view, std::s
     for (std::uint32_t x = range.x0; x <= range.x1; ++x)
       for (std::uint32_t y = range.y0; y <= range.y1;) {
         const std::uint32_t end = std::min(range.y1, y | (G::kBandRows - 1));  // the range's last row in y's band
-        run(static_cast<std::size_t>(std::lower_bound(first, last, G::pack(above, y, x)) - view.key.begin()),
-            G::pack(above, end, x));
+        visit_run(static_cast<std::size_t>(std::lower_bound(first, last, G::pack(above, y, x)) - view.key.begin()),
+                  G::pack(above, end, x));
         y = end + 1;
       }
   }
