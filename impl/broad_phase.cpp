@@ -5,9 +5,12 @@
 #include "impl/predicate.hpp"
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 namespace circles::impl {
 
@@ -120,23 +123,61 @@ constexpr auto kBefore = [](const auto& a, const auto& b) {
   return a.key < b.key || (a.key == b.key && a.slot < b.slot);
 };
 
-// Insertion sort with a budget of moves linear in the list; past it, std::sort.
+// Sorts entries that are in ascending slot order by key, stably, so into kBefore's (key, slot) order, in time
+// linear in their number: least significant digit first, kRadixBits bits a pass, each pass starting at the
+// lowest bit above the last pass where two keys differ (the bits all keys share, such as the level's in a
+// one-level scene or most of the band's, cost nothing). Below kRadixFrom entries std::sort is faster.
+// kRadixBits = 11: 2^11 four-byte counters (8 KiB) stay in the first-level cache, and the few bit ranges a
+// scene's keys differ in (row, column, band, level: broad_phase.hpp's layout) take three or four passes.
+inline constexpr int kRadixBits = 11;
+inline constexpr std::size_t kRadixFrom = 1024;
+
 template <class Entry>
-void repair(std::vector<Entry>& list) {
+void sort_slot_ordered(std::span<Entry> list, std::vector<Entry>& scratch) {
+  if (list.size() < kRadixFrom) {
+    std::sort(list.begin(), list.end(), kBefore);
+    return;
+  }
+  CellKey differ = 0;
+  for (const Entry& e : list) differ |= e.key ^ list.front().key;
+  if (differ == 0) return;  // one key: slot order is the order
+  scratch.resize(list.size());
+  std::span<Entry> from = list, to = scratch;
+  constexpr std::size_t kDigits = std::size_t{1} << kRadixBits;
+  std::array<std::uint32_t, kDigits> at;  // CellOrder::sort takes fewer than 2^32 slots
+  for (int shift = std::countr_zero(differ); shift < 64;) {
+    const auto digit = [shift](const Entry& e) { return static_cast<std::size_t>(e.key >> shift) & (kDigits - 1); };
+    at.fill(0);
+    for (const Entry& e : from) ++at[digit(e)];
+    std::uint32_t sum = 0;
+    for (std::uint32_t& a : at) sum += std::exchange(a, sum);
+    for (const Entry& e : from) to[at[digit(e)]++] = e;
+    std::swap(from, to);
+    shift += kRadixBits;
+    if (shift >= 64 || (differ >> shift) == 0) break;
+    shift += std::countr_zero(differ >> shift);
+  }
+  if (from.data() != list.data()) std::copy(from.begin(), from.end(), list.begin());
+}
+
+// Insertion sort of entries in slot order with a budget of moves linear in the list (it may overrun by the
+// last insertion's moves, fewer than the list's size): once it is spent, the front [0, a] is sorted and the
+// rest is still in slot order, so sort_slot_ordered sorts the rest and one merge joins the two.
+template <class Entry>
+void repair(std::vector<Entry>& list, std::vector<Entry>& scratch) {
   std::size_t budget = 8 * list.size() + 64;
   for (std::size_t a = 1; a < list.size(); ++a) {
     const Entry e = list[a];
     std::size_t b = a;
-    while (b > 0 && kBefore(e, list[b - 1])) {
-      list[b] = list[b - 1];
-      --b;
-      if (--budget == 0) {
-        list[b] = e;
-        std::sort(list.begin(), list.end(), kBefore);
-        return;
-      }
-    }
+    for (; b > 0 && kBefore(e, list[b - 1]); --b) list[b] = list[b - 1];
     list[b] = e;
+    if (a - b >= budget) {
+      const auto rest = list.begin() + static_cast<std::ptrdiff_t>(a + 1);
+      sort_slot_ordered(std::span<Entry>(rest, list.end()), scratch);
+      std::inplace_merge(list.begin(), rest, list.end(), kBefore);
+      return;
+    }
+    budget -= a - b;
   }
 }
 
@@ -185,11 +226,13 @@ void CellOrder::Chunk::split(std::span<const CellKey> keys, std::span<const Cell
 }
 
 void CellOrder::Chunk::merge_into(std::span<std::uint32_t> out) {
-  repair(same);
-  repair(up);
-  repair(down);
-  std::sort(other.begin(), other.end(), kBefore);
-  std::sort(incoming.begin(), incoming.end(), kBefore);
+  // Each list is in slot order: split() reads slots ascending, and `incoming` takes the chunks' hand-overs in
+  // chunk order, each in slot order.
+  repair(same, spare);
+  repair(up, spare);
+  repair(down, spare);
+  sort_slot_ordered(std::span<Entry>(other), spare);
+  sort_slot_ordered(std::span<Entry>(incoming), spare);
   // Merge the small lists first, then the large one once.
   spare.resize(up.size() + down.size());
   std::merge(up.begin(), up.end(), down.begin(), down.end(), spare.begin(), kBefore);

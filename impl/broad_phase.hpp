@@ -31,8 +31,8 @@
 // pair tests read partners that are still in the first-level cache; only a band's top row looks into the
 // next band. A neighbourhood is then at most five runs of consecutive slots. Circles move little per step,
 // so the order of one step is nearly the order of the next: CellOrder re-sorts in linear time when each
-// circle stays in its band or moves to the next one (the common case) and falls back to std::sort for the
-// few that move further.
+// circle stays in its band or moves to the next one (the common case) and sorts the others by digits (a
+// radix sort, linear too).
 #pragma once
 
 #include <algorithm>

@@ -1,6 +1,6 @@
 // The broad phase's walk and order (impl/broad_phase.hpp), checked directly against their definitions rather
 // than only through the engines: every pair of neighbouring cells is visited exactly once, from the earlier
-// slot, across band boundaries and levels; and CellOrder's guided re-sort equals a plain sort.
+// slot, across band boundaries and levels; and CellOrder's sorts, guided or by digits, equal a plain sort.
 #include "impl/broad_phase.hpp"
 #include "impl/contacts.hpp"
 
@@ -147,6 +147,62 @@ TEST(broad_phase, the_guided_re_sort_equals_a_plain_sort_after_moves_within_and_
   std::iota(plain.begin(), plain.end(), 0u);
   std::stable_sort(plain.begin(), plain.end(), [&](std::uint32_t a, std::uint32_t b) { return moved[a] < moved[b]; });
   EXPECT_EQ(guided, plain);
+}
+
+// The slots of `keys` in (key, slot) order, by a plain stable sort: what CellOrder::sort must return.
+std::vector<std::uint32_t> plainly_sorted(const std::vector<CellKey>& keys) {
+  std::vector<std::uint32_t> order(keys.size());
+  std::iota(order.begin(), order.end(), 0u);
+  std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return keys[a] < keys[b]; });
+  return order;
+}
+
+TEST(broad_phase, the_sort_of_many_unguided_keys_equals_a_plain_sort_whichever_bits_they_differ_in) {
+  // Past kRadixFrom (1,024) entries the sort goes by 11-bit digits from the lowest bit where keys differ,
+  // skipping bits they all share. Each set has many repeated keys (their slot order must survive every pass)
+  // and differs in other bits: a digit's edges (bits 10 and 11), two bits far apart (0 and 59, the level's
+  // top), a whole digit (30 to 40), the last bits (a pass from 45 ends at 55, and 63 still needs a pass),
+  // and the layout (row, column, band, level up to the global one).
+  std::mt19937_64 random(21);
+  const std::size_t n = 5000;
+  const std::vector<std::pair<const char*, std::vector<CellKey>>> masks = {
+      {"bits 10 and 11", {CellKey{1} << 10, CellKey{1} << 11}},
+      {"bits 0 and 59", {CellKey{1}, CellKey{1} << 59}},
+      {"bits 30 to 40", {CellKey{0x7ff} << 30}},
+      {"bits 45 and 63", {CellKey{1} << 45, CellKey{1} << 63}},
+  };
+  for (const auto& [name, bits] : masks) {
+    std::vector<CellKey> keys(n);
+    for (CellKey& k : keys)
+      for (const CellKey b : bits) k |= b & random();
+    std::vector<std::uint32_t> order;
+    CellOrder().sort(keys, {}, order);
+    EXPECT_EQ(order, plainly_sorted(keys)) << name;
+  }
+  std::vector<CellKey> keys(n);
+  for (CellKey& k : keys)
+    k = random() % 50 == 0 ? G::pack(G::kGlobalLevel, 0, 0)
+                           : G::pack(static_cast<unsigned>(random() % 3) * 7, static_cast<std::uint32_t>(random() % 300),
+                                     static_cast<std::uint32_t>(random() % 40) + (std::uint32_t{1} << 20));
+  std::vector<std::uint32_t> order;
+  CellOrder().sort(keys, {}, order);
+  EXPECT_EQ(order, plainly_sorted(keys)) << "the layout";
+}
+
+TEST(broad_phase, the_guided_re_sort_equals_a_plain_sort_when_every_slot_changes_column_within_its_band) {
+  // Every slot stays in its band, so the insertion sort of those slots runs out of its budget (8 moves a slot)
+  // early and sorts the rest by digits, then merges it with the sorted front.
+  std::mt19937_64 random(22);
+  const std::size_t n = 20000;
+  std::vector<CellKey> previous(n), moved(n);
+  for (std::size_t t = 0; t < n; ++t)
+    previous[t] = G::pack(0, static_cast<std::uint32_t>(t * 64 / n), static_cast<std::uint32_t>(t % 500));
+  std::sort(previous.begin(), previous.end());
+  for (std::size_t t = 0; t < n; ++t)
+    moved[t] = G::pack(0, G::cell_y(previous[t]), static_cast<std::uint32_t>(random() % 500));
+  std::vector<std::uint32_t> guided;
+  EXPECT_FALSE(CellOrder().sort(moved, previous, guided));
+  EXPECT_EQ(guided, plainly_sorted(moved));
 }
 
 TEST(broad_phase, the_re_sort_in_parts_on_several_threads_equals_a_plain_sort) {
