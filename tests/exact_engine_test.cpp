@@ -529,6 +529,30 @@ TEST(exact_engine, keeps_its_proven_width_through_the_steps_of_a_kept_list) {
   }
 }
 
+TEST(exact_engine, catches_its_lonely_circles_up_before_a_width_proof_in_the_middle_of_a_kept_list) {
+  // Half the circles are in no listed pair, so the list's steps move the other half alone; the lonely ones take
+  // their pending moves at once before the proof (update), which must measure them where they are and leave
+  // the listed pair, which has met and parted by then, where it is. D = 60 (every value an integer, the far
+  // one a multiple of 8) and max |V| = 60: the far circle, lonely, starts at X = 60·far = 2^61 − 1,472 and
+  // gains 60 a step, so the first 64-bit proof holds for 24 steps, inside the list's horizon of 40, and the
+  // one at step 24, from X = 2^61 − 32, moves the state to 128 bits. Measured without its 24 pending moves,
+  // it would stay at 64.
+  const double far = 38430716820228208;  // 60·far = 2^61 − 1,472
+  ExactEngine engine(World({{-10, 0, 60, 0, 1}, {10, 0, -60, 0, 1}, {0, 1000, 0, 60, 1}, {far, 0, 60, 0, 1}}),
+                     kept(40));
+  ASSERT_EQ(engine.width(), 64u);
+  spec::Sequence oracle = engine.exact();
+  for (int t = 1; t <= 40; ++t) {
+    engine.step();
+    oracle = spec::resolved_step(oracle);
+    ASSERT_EQ(engine.exact(), oracle) << "step " << t;
+    ASSERT_EQ(engine.width(), t <= 24 ? 64u : 128u) << "step " << t;
+  }
+  EXPECT_EQ(engine.stats().rebuilds, 1u);
+  EXPECT_EQ(engine.stats().contacts, 1u) << "the pair touches at step 9 alone, then parts";
+  EXPECT_EQ(engine.stats().lonely_circle_steps, 40u * 2);
+}
+
 TEST(exact_engine, counts_its_work_as_the_double_engine_does) {
   // Two circles far apart: every step is quiet, no circle is tested, and the schedule lengthens the horizon
   // as it does for the double engine; then a fixed horizon on a busy scene whose moves are exact: the same
