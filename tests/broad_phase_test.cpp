@@ -127,6 +127,14 @@ TEST(broad_phase, keys_order_cells_by_level_band_column_then_row_within_the_band
     }
 }
 
+// The slots of `keys` in (key, slot) order, by a plain stable sort: what CellOrder::sort must return.
+std::vector<std::uint32_t> plainly_sorted(const std::vector<CellKey>& keys) {
+  std::vector<std::uint32_t> order(keys.size());
+  std::iota(order.begin(), order.end(), 0u);
+  std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return keys[a] < keys[b]; });
+  return order;
+}
+
 TEST(broad_phase, the_guided_re_sort_equals_a_plain_sort_after_moves_within_and_across_bands) {
   const Sorted s = sorted(busy_world(7));
   const std::size_t n = s.key.size();
@@ -142,19 +150,9 @@ TEST(broad_phase, the_guided_re_sort_equals_a_plain_sort_after_moves_within_and_
     };
     moved[t] = G::pack(G::level(k), shift(G::cell_y(k)), shift(G::cell_x(k)));
   }
-  std::vector<std::uint32_t> guided, plain(n);
+  std::vector<std::uint32_t> guided;
   CellOrder().sort(moved, s.key, guided);
-  std::iota(plain.begin(), plain.end(), 0u);
-  std::stable_sort(plain.begin(), plain.end(), [&](std::uint32_t a, std::uint32_t b) { return moved[a] < moved[b]; });
-  EXPECT_EQ(guided, plain);
-}
-
-// The slots of `keys` in (key, slot) order, by a plain stable sort: what CellOrder::sort must return.
-std::vector<std::uint32_t> plainly_sorted(const std::vector<CellKey>& keys) {
-  std::vector<std::uint32_t> order(keys.size());
-  std::iota(order.begin(), order.end(), 0u);
-  std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return keys[a] < keys[b]; });
-  return order;
+  EXPECT_EQ(guided, plainly_sorted(moved));
 }
 
 TEST(broad_phase, the_sort_of_many_unguided_keys_equals_a_plain_sort_whichever_bits_they_differ_in) {
@@ -240,12 +238,10 @@ TEST(broad_phase, the_re_sort_in_parts_on_several_threads_equals_a_plain_sort) {
       while (part + 1 < chunks && previous[chunk_begin(n, chunks, part + 1)] <= moved[t]) ++part;
       crossed += part != t * chunks / n;
     }
-    std::vector<std::uint32_t> parted, plain(n);
+    std::vector<std::uint32_t> parted;
     CellOrder order;
     EXPECT_FALSE(order.sort(moved, previous, parted, threads));
-    std::iota(plain.begin(), plain.end(), 0u);
-    std::stable_sort(plain.begin(), plain.end(), [&](std::uint32_t a, std::uint32_t b) { return moved[a] < moved[b]; });
-    EXPECT_EQ(parted, plain) << threads << " threads";
+    EXPECT_EQ(parted, plainly_sorted(moved)) << threads << " threads";
     if (threads > 1) {
       EXPECT_GT(chunks, 1u);
       EXPECT_GT(crossed, n / 50) << threads << " threads: too few keys change part to test the hand-over";
