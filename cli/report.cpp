@@ -270,7 +270,9 @@ std::string merge_reports(const std::vector<std::string>& texts, const std::vect
     if (!r["counterexample"].is_null() && (counterexample.is_null() || rank(r["counterexample"]) < rank(counterexample)))
       counterexample = r["counterexample"];
     for (const auto& [family, count] : r["families"].items()) {
-      auto at = std::find_if(families.begin(), families.end(), [&](const auto& p) { return p.first == family; });
+      // [&name = family]: Clang 14 cannot capture a structured binding (the sanitizer and fuzz build is Clang's).
+      const auto named = [&name = family](const auto& p) { return p.first == name; };
+      auto at = std::find_if(families.begin(), families.end(), named);
       if (at == families.end()) families.emplace_back(family, count.get<std::uint64_t>());
       else at->second += count.get<std::uint64_t>();
     }

@@ -171,8 +171,9 @@ TEST(gallery, each_committed_counterexample_still_catches_the_mistake_that_made_
   const auto corpus = load_corpus(std::filesystem::path(CIRCLES_SOURCE_DIR) / "tests" / "corpus" / "conform");
   EXPECT_GE(corpus.size(), 4u);
   for (const auto& [file, c] : corpus) {
+    const std::string& candidate = c.candidate;  // Clang 14 cannot capture the structured binding c itself
     const auto entry = std::find_if(gallery().begin(), gallery().end(), [&](const GalleryEntry& e) {
-      return c.candidate == "the gallery entry `" + e.description + "`";
+      return candidate == "the gallery entry `" + e.description + "`";
     });
     ASSERT_NE(entry, gallery().end()) << file << " names " << c.candidate;
     const auto expected = properties::expected_step(c.world, c.profile);
