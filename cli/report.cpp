@@ -25,10 +25,6 @@ namespace json_number = formats::json_number;
 
 constexpr const char* kFormat = "circles-conform-report/1";
 
-std::string json_string(const std::string& s) {
-  return nlohmann::json(s).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
-}
-
 void append_world(std::string& out, const Circles& w) {
   out += '[';
   for (std::size_t k = 0; k < w.size(); ++k) {
@@ -133,6 +129,10 @@ void check_report(const nlohmann::json& r, const std::string& name) {
 }
 
 }  // namespace
+
+std::string json_string(const std::string& s) {
+  return nlohmann::json(s).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
 
 std::string json_report(const Verdict& v, const std::string& text) {
   const conform::Options& o = v.options;

@@ -1,5 +1,7 @@
 #include "cli/vectors.hpp"
 
+#include "cli/report.hpp"
+
 #include "conform/conform.hpp"
 #include "formats/json_number.hpp"
 #include "formats/output_file.hpp"
@@ -25,12 +27,6 @@ std::vector<spec::Circle> exact_circles(const Circles& w) {
   std::vector<spec::Circle> out;
   for (std::size_t k = 0; k < w.size(); ++k) out.push_back(spec::from_doubles(w[k], k, spec::Radii::non_negative));
   return out;
-}
-
-// A JSON string: nlohmann escapes quotes and control characters; a byte that is not UTF-8 (a file name can hold
-// one) becomes U+FFFD rather than an exception.
-std::string json_string(const std::string& s) {
-  return nlohmann::json(s).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 // [[a, b, c, d, e], ...] with each value written by `write`.

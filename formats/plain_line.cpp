@@ -28,8 +28,6 @@ namespace {
 
 using namespace simdjson;
 
-constexpr std::size_t kFields = std::tuple_size_v<Circles::value_type>;  // [px, py, vx, vy, r]
-
 // One field of a circle, or nothing.
 std::optional<double> number(ondemand::value value) {
   ondemand::number_type type;

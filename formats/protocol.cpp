@@ -18,7 +18,6 @@ ProtocolError::ProtocolError(std::size_t line_number, const std::string& why)
 
 namespace {
 
-constexpr std::size_t kFields = 5;  // [px, py, vx, vy, r]
 
 // What a strict line's message says after a field's token NaN, Infinity or -Infinity.
 constexpr const char* kNotFinite =

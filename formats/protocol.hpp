@@ -18,6 +18,7 @@ namespace circles::formats {
 
 // A world as the protocol carries it: [px, py, vx, vy, r] per circle.
 using Circles = std::vector<std::array<double, 5>>;
+inline constexpr std::size_t kFields = std::tuple_size_v<Circles::value_type>;  // px, py, vx, vy, r
 
 // A line that is not a protocol line. what() is "line L: reason", the reason naming the key or the circle and
 // field at fault: "line 3: circle 1, field r: radius -2 is negative (r >= 0, the resolved profile) (not an

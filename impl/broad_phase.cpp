@@ -146,10 +146,10 @@ void sort_slot_ordered(std::span<Entry> list, std::vector<Entry>& scratch) {
   if (differ == 0) return;  // one key: slot order is the order
   scratch.resize(list.size());
   std::span<Entry> from = list, to = scratch;
-  constexpr std::size_t kDigits = std::size_t{1} << kRadixBits;
-  std::array<std::uint32_t, kDigits> at;  // CellOrder::sort takes fewer than 2^32 slots
+  constexpr std::size_t kRadix = std::size_t{1} << kRadixBits;
+  std::array<std::uint32_t, kRadix> at;  // CellOrder::sort takes fewer than 2^32 slots
   for (int shift = std::countr_zero(differ); shift < 64;) {
-    const auto digit = [shift](const Entry& e) { return static_cast<std::size_t>(e.key >> shift) & (kDigits - 1); };
+    const auto digit = [shift](const Entry& e) { return static_cast<std::size_t>(e.key >> shift) & (kRadix - 1); };
     at.fill(0);
     for (const Entry& e : from) ++at[digit(e)];
     std::uint32_t sum = 0;

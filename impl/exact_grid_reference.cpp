@@ -33,11 +33,11 @@ namespace {
 using exact::Wide;
 using Circles = std::vector<std::array<double, 5>>;
 
-mpz_srcptr raw(const Wide& z) noexcept { return z.backend().data(); }
-mpz_ptr raw(Wide& z) noexcept { return z.backend().data(); }
+mpz_srcptr mpz_of(const Wide& z) noexcept { return z.backend().data(); }
+mpz_ptr mpz_of(Wide& z) noexcept { return z.backend().data(); }
 
 // The integer q·scale, for a rational q whose denominator divides scale.
-Wide scaled(const spec::Q& q, const Wide& scale) {
+Wide at_scale(const spec::Q& q, const Wide& scale) {
   return boost::multiprecision::numerator(q) * (scale / boost::multiprecision::denominator(q));
 }
 
@@ -75,18 +75,18 @@ ExactGrid::ExactGrid(const spec::Sequence& w0) {
       if (!std::isfinite(rounded_[k][f]))
         throw spec::OutsideC(k, static_cast<spec::Field>(f),
                              "value " + spec::to_string(*fields[f]) + " is beyond the double range");
-      mpz_lcm(raw(l), raw(l), raw(boost::multiprecision::denominator(*fields[f])));
+      mpz_lcm(mpz_of(l), mpz_of(l), mpz_of(boost::multiprecision::denominator(*fields[f])));
     }
   }
   den_v_ = l;
   den_ = 60 * l;
   for (auto* field : {&x_, &y_, &vx_, &vy_, &r_}) field->reserve(n);
   for (const spec::Circle& c : w0) {
-    x_.push_back(scaled(c.p.x(), den_));
-    y_.push_back(scaled(c.p.y(), den_));
-    vx_.push_back(scaled(c.v.x(), den_v_));
-    vy_.push_back(scaled(c.v.y(), den_v_));
-    r_.push_back(scaled(c.r, den_));
+    x_.push_back(at_scale(c.p.x(), den_));
+    y_.push_back(at_scale(c.p.y(), den_));
+    vx_.push_back(at_scale(c.v.x(), den_v_));
+    vy_.push_back(at_scale(c.v.y(), den_v_));
+    r_.push_back(at_scale(c.r, den_));
   }
   for (auto* field : {&next_x_, &next_y_, &next_vx_, &next_vy_}) field->resize(n);
   next_rounded_.resize(n);
@@ -103,15 +103,15 @@ ExactGrid::ExactGrid(const spec::Sequence& w0) {
 }
 
 bool ExactGrid::intersect_exactly(std::size_t a, std::size_t b) {
-  mpz_add(raw(sum_), raw(r_[a]), raw(r_[b]));
-  mpz_sub(raw(dx_), raw(x_[b]), raw(x_[a]));
-  mpz_sub(raw(dy_), raw(y_[b]), raw(y_[a]));
+  mpz_add(mpz_of(sum_), mpz_of(r_[a]), mpz_of(r_[b]));
+  mpz_sub(mpz_of(dx_), mpz_of(x_[b]), mpz_of(x_[a]));
+  mpz_sub(mpz_of(dy_), mpz_of(y_[b]), mpz_of(y_[a]));
   return exact::intersect_scaled(sum_, dx_, dy_);
 }
 
 bool ExactGrid::precedes(std::size_t a, std::size_t b) const noexcept {
   for (const auto* field : {&x_, &y_, &vx_, &vy_, &r_})
-    if (const int s = mpz_cmp(raw((*field)[a]), raw((*field)[b]))) return s < 0;
+    if (const int s = mpz_cmp(mpz_of((*field)[a]), mpz_of((*field)[b]))) return s < 0;
   return a < b;
 }
 
@@ -141,10 +141,10 @@ void ExactGrid::step() {
   // f(c, W) = u(h(c, e)): X ← X + V_e, V ← V_e; the radius stays.
   for (std::size_t k = 0; k < n; ++k) {
     const std::size_t e = least[k];
-    mpz_add(raw(next_x_[k]), raw(x_[k]), raw(vx_[e]));
-    mpz_add(raw(next_y_[k]), raw(y_[k]), raw(vy_[e]));
-    mpz_set(raw(next_vx_[k]), raw(vx_[e]));
-    mpz_set(raw(next_vy_[k]), raw(vy_[e]));
+    mpz_add(mpz_of(next_x_[k]), mpz_of(x_[k]), mpz_of(vx_[e]));
+    mpz_add(mpz_of(next_y_[k]), mpz_of(y_[k]), mpz_of(vy_[e]));
+    mpz_set(mpz_of(next_vx_[k]), mpz_of(vx_[e]));
+    mpz_set(mpz_of(next_vy_[k]), mpz_of(vy_[e]));
     const double px = exact::round_quotient(next_x_[k], den_), py = exact::round_quotient(next_y_[k], den_);
     if (std::isinf(px)) throw PositionOverflow(steps_ + 1, k, "px");
     if (std::isinf(py)) throw PositionOverflow(steps_ + 1, k, "py");

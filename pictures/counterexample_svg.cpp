@@ -22,19 +22,19 @@ constexpr double kMargin = 40;
 constexpr double kLeast = 3;       // the smallest radius drawn, in points
 constexpr double kMarker = 7;      // half the size of the + and × markers
 
-struct Colour {
+struct Rgb {
   double r, g, b;
 };
-constexpr Colour kGrey{0.35, 0.35, 0.35}, kBlue{0.1, 0.3, 0.85}, kOrange{0.95, 0.55, 0.1}, kGreen{0.1, 0.6, 0.1},
+constexpr Rgb kGrey{0.35, 0.35, 0.35}, kBlue{0.1, 0.3, 0.85}, kOrange{0.95, 0.55, 0.1}, kGreen{0.1, 0.6, 0.1},
     kRed{0.8, 0.1, 0.1}, kBlack{0, 0, 0};
 
-void set(cairo_t* cr, Colour c, double alpha = 1) { cairo_set_source_rgba(cr, c.r, c.g, c.b, alpha); }
+void set(cairo_t* cr, Rgb c, double alpha = 1) { cairo_set_source_rgba(cr, c.r, c.g, c.b, alpha); }
 
 // World coordinates to points: the bounding box of what is drawn, fitted into the area below the text, y up.
 // In long double, whose range holds the squares and differences of any two doubles.
-class View {
+class PageView {
  public:
-  View(long double x0, long double x1, long double y0, long double y1) {
+  PageView(long double x0, long double x1, long double y0, long double y1) {
     const long double w = kWidth - 2 * kMargin, h = kHeight - kTextBand - 2 * kMargin;
     long double dx = x1 - x0, dy = y1 - y0;
     if (!(dx > 0) && !(dy > 0)) dx = dy = 1;  // a single point: any scale
@@ -57,7 +57,7 @@ class View {
 // has no place in the picture, and the report's lines say what it was.
 bool drawable(const std::array<double, 5>& c) { return std::isfinite(c[0]) && std::isfinite(c[1]) && std::isfinite(c[4]) && c[4] >= 0; }
 
-View fit(const CounterexamplePicture& p) {
+PageView fit(const CounterexamplePicture& p) {
   long double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
   const auto include = [&](const std::array<double, 5>& c) {
     if (!drawable(c)) return;
@@ -70,11 +70,11 @@ View fit(const CounterexamplePicture& p) {
   for (const auto& c : p.world) include(c);
   if (p.circle < p.expected.size()) include(p.expected[p.circle]);
   if (p.circle < p.actual.size()) include(p.actual[p.circle]);
-  if (p.world.empty()) return View(0, 1, 0, 1);
-  return View(x0, x1, y0, y1);
+  if (p.world.empty()) return PageView(0, 1, 0, 1);
+  return PageView(x0, x1, y0, y1);
 }
 
-void circle(cairo_t* cr, const View& v, const std::array<double, 5>& c) {
+void circle(cairo_t* cr, const PageView& v, const std::array<double, 5>& c) {
   cairo_new_sub_path(cr);
   cairo_arc(cr, v.x(c[0]), v.y(c[1]), v.length(c[4]), 0, 2 * std::numbers::pi);
 }
@@ -106,7 +106,7 @@ std::string counterexample_svg(const CounterexamplePicture& p) {
   cairo_surface_t* surface = cairo_svg_surface_create_for_stream(write, &svg, kWidth, kHeight);
   cairo_t* cr = cairo_create(surface);
 
-  set(cr, Colour{1, 1, 1});
+  set(cr, Rgb{1, 1, 1});
   cairo_paint(cr);
 
   // The text band.
@@ -121,7 +121,7 @@ std::string counterexample_svg(const CounterexamplePicture& p) {
   // The legend, on one line.
   double lx = 10;
   const double ly = kTextBand - 12;
-  const auto swatch = [&](Colour c, bool filled, bool dashed, const std::string& label) {
+  const auto swatch = [&](Rgb c, bool filled, bool dashed, const std::string& label) {
     set(cr, c);
     cairo_set_line_width(cr, 2);
     if (dashed) {
@@ -161,7 +161,7 @@ std::string counterexample_svg(const CounterexamplePicture& p) {
   cairo_stroke(cr);
 
   const Circles& w = p.world;
-  const View v = fit(p);
+  const PageView v = fit(p);
   const std::size_t n = w.size();
   std::vector<std::vector<bool>> touch(n, std::vector<bool>(n, false));
   for (std::size_t a = 0; a < n; ++a)

@@ -1,6 +1,7 @@
 // Equations (1)-(9), one suite per equation, on hand-computed cases with exact expected values.
 // Each expectation is derived in the comment beside it from the seed, not read off the code.
 #include "spec/oracle.hpp"
+#include "tests/pow2.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,7 +11,7 @@
 namespace circles::spec {
 namespace {
 
-Q pow2(long k) { return k >= 0 ? Q(Z(1) << k) : Q(Z(1), Z(1) << -k); }
+using testing::pow2;
 
 // A circle at rest: (px, py, 0, 0, r).
 Circle at(const Q& px, const Q& py, const Q& r) { return circle(px, py, 0, 0, r); }

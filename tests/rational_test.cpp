@@ -2,6 +2,7 @@
 // Expected values are derived by hand from the definition of binary64, never from the code under test.
 #include "spec/oracle.hpp"
 #include "spec/rational.hpp"
+#include "tests/pow2.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,7 +14,7 @@
 namespace circles::spec {
 namespace {
 
-Q pow2(long k) { return k >= 0 ? Q(Z(1) << k) : Q(Z(1), Z(1) << -k); }
+using testing::pow2;
 
 TEST(exact, gives_the_dyadic_value_of_a_double) {
   // 0.1 is stored as 3602879701896397 / 2^55.

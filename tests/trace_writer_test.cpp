@@ -35,7 +35,7 @@ std::string plain(double x) {
   return s;
 }
 
-std::string written(double x) {
+std::string written_to_buffer(double x) {
   char text[json_number::kMaxChars];
   return std::string(text, json_number::write(text, x));
 }
@@ -59,13 +59,13 @@ std::vector<double> doubles(std::size_t random) {
 
 TEST(json_number, write_gives_the_bytes_of_a_plain_to_chars_rendering) {
   for (const double x : doubles(200000)) {
-    ASSERT_EQ(written(x), plain(x)) << json_number::hex(x);
-    ASSERT_LE(written(x).size(), json_number::kMaxChars);
+    ASSERT_EQ(written_to_buffer(x), plain(x)) << json_number::hex(x);
+    ASSERT_LE(written_to_buffer(x).size(), json_number::kMaxChars);
   }
-  EXPECT_EQ(written(-0.0), "-0.0");
-  EXPECT_EQ(written(1e22), "1e+22");
-  EXPECT_EQ(written(123456789012345680000.0), "123456789012345683968.0");  // fixed form: all its digits
-  EXPECT_EQ(written(-2.2250738585072014e-308), "-2.2250738585072014e-308");
+  EXPECT_EQ(written_to_buffer(-0.0), "-0.0");
+  EXPECT_EQ(written_to_buffer(1e22), "1e+22");
+  EXPECT_EQ(written_to_buffer(123456789012345680000.0), "123456789012345683968.0");  // fixed form: all its digits
+  EXPECT_EQ(written_to_buffer(-2.2250738585072014e-308), "-2.2250738585072014e-308");
 }
 
 TEST(json_number, append_appends_what_write_writes) {
