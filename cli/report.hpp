@@ -42,11 +42,11 @@ class ReportError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// `text`: the counterexample as `circles conform` prints it (cli/conform_report.hpp), kept in both reports.
 // A JSON string: nlohmann escapes quotes and control characters; a byte that is not UTF-8 (a file name can hold
 // one) becomes U+FFFD rather than an exception. The reports and `circles vectors` write names with it.
 std::string json_string(const std::string& s);
 
+// `text`: the counterexample as `circles conform` prints it (cli/conform_report.hpp), kept in both reports.
 std::string json_report(const conform::Verdict& verdict, const std::string& text);
 std::string junit_report(const conform::Verdict& verdict, const std::string& text);
 

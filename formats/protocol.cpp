@@ -18,7 +18,6 @@ ProtocolError::ProtocolError(std::size_t line_number, const std::string& why)
 
 namespace {
 
-
 // What a strict line's message says after a field's token NaN, Infinity or -Infinity.
 constexpr const char* kNotFinite =
     " is not finite: a request or trace holds finite numbers (only an answer to conform may hold NaN, Infinity or "

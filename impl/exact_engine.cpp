@@ -30,6 +30,7 @@ namespace circles::impl {
 namespace {
 
 using exact::Narrow;
+using exact::raw;
 using exact::NarrowMagnitude;
 using exact::Wide;
 using exact::Word;
@@ -59,9 +60,6 @@ constexpr auto kForever = std::numeric_limits<std::uint64_t>::max();
 
 template <class Int>
 constexpr bool kFixed = !std::is_same_v<Int, Wide>;
-
-mpz_srcptr raw(const Wide& z) noexcept { return z.backend().data(); }
-mpz_ptr raw(Wide& z) noexcept { return z.backend().data(); }
 
 Wide widen(NarrowMagnitude m) {
   Wide w(static_cast<std::uint64_t>(m >> 64));

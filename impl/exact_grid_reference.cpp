@@ -30,11 +30,9 @@
 namespace circles::impl {
 namespace {
 
+using exact::raw;
 using exact::Wide;
 using Circles = std::vector<std::array<double, 5>>;
-
-mpz_srcptr mpz_of(const Wide& z) noexcept { return z.backend().data(); }
-mpz_ptr mpz_of(Wide& z) noexcept { return z.backend().data(); }
 
 // The integer q·scale, for a rational q whose denominator divides scale.
 Wide at_scale(const spec::Q& q, const Wide& scale) {
@@ -75,7 +73,7 @@ ExactGrid::ExactGrid(const spec::Sequence& w0) {
       if (!std::isfinite(rounded_[k][f]))
         throw spec::OutsideC(k, static_cast<spec::Field>(f),
                              "value " + spec::to_string(*fields[f]) + " is beyond the double range");
-      mpz_lcm(mpz_of(l), mpz_of(l), mpz_of(boost::multiprecision::denominator(*fields[f])));
+      mpz_lcm(raw(l), raw(l), raw(boost::multiprecision::denominator(*fields[f])));
     }
   }
   den_v_ = l;
@@ -103,15 +101,15 @@ ExactGrid::ExactGrid(const spec::Sequence& w0) {
 }
 
 bool ExactGrid::intersect_exactly(std::size_t a, std::size_t b) {
-  mpz_add(mpz_of(sum_), mpz_of(r_[a]), mpz_of(r_[b]));
-  mpz_sub(mpz_of(dx_), mpz_of(x_[b]), mpz_of(x_[a]));
-  mpz_sub(mpz_of(dy_), mpz_of(y_[b]), mpz_of(y_[a]));
+  mpz_add(raw(sum_), raw(r_[a]), raw(r_[b]));
+  mpz_sub(raw(dx_), raw(x_[b]), raw(x_[a]));
+  mpz_sub(raw(dy_), raw(y_[b]), raw(y_[a]));
   return exact::intersect_scaled(sum_, dx_, dy_);
 }
 
 bool ExactGrid::precedes(std::size_t a, std::size_t b) const noexcept {
   for (const auto* field : {&x_, &y_, &vx_, &vy_, &r_})
-    if (const int s = mpz_cmp(mpz_of((*field)[a]), mpz_of((*field)[b]))) return s < 0;
+    if (const int s = mpz_cmp(raw((*field)[a]), raw((*field)[b]))) return s < 0;
   return a < b;
 }
 
@@ -141,10 +139,10 @@ void ExactGrid::step() {
   // f(c, W) = u(h(c, e)): X ← X + V_e, V ← V_e; the radius stays.
   for (std::size_t k = 0; k < n; ++k) {
     const std::size_t e = least[k];
-    mpz_add(mpz_of(next_x_[k]), mpz_of(x_[k]), mpz_of(vx_[e]));
-    mpz_add(mpz_of(next_y_[k]), mpz_of(y_[k]), mpz_of(vy_[e]));
-    mpz_set(mpz_of(next_vx_[k]), mpz_of(vx_[e]));
-    mpz_set(mpz_of(next_vy_[k]), mpz_of(vy_[e]));
+    mpz_add(raw(next_x_[k]), raw(x_[k]), raw(vx_[e]));
+    mpz_add(raw(next_y_[k]), raw(y_[k]), raw(vy_[e]));
+    mpz_set(raw(next_vx_[k]), raw(vx_[e]));
+    mpz_set(raw(next_vy_[k]), raw(vy_[e]));
     const double px = exact::round_quotient(next_x_[k], den_), py = exact::round_quotient(next_y_[k], den_);
     if (std::isinf(px)) throw PositionOverflow(steps_ + 1, k, "px");
     if (std::isinf(py)) throw PositionOverflow(steps_ + 1, k, "py");

@@ -45,8 +45,6 @@ U256 add(U256 a, U256 b) noexcept {
   return {a.hi + b.hi + (lo < a.lo ? 1 : 0), lo};
 }
 
-mpz_srcptr raw(const Wide& z) noexcept { return z.backend().data(); }
-
 // Leading zero bits of a nonzero 128-bit value (std::countl_zero takes standard unsigned types only).
 int leading_zeros(NarrowMagnitude x) noexcept {
   const auto hi = static_cast<std::uint64_t>(x >> 64);

@@ -15,6 +15,8 @@
 #include "impl/predicate.hpp"
 #include "spec/rational.hpp"
 
+#include <gmp.h>
+
 #include <cmath>
 #include <cstdint>
 
@@ -25,6 +27,10 @@ __extension__ typedef __int128 Narrow;
 __extension__ typedef unsigned __int128 NarrowMagnitude;
 using Wide = spec::Z;
 using Word = std::int64_t;
+
+// The GMP integer inside a Wide, for the mpz_* calls that work in place or read limbs.
+inline mpz_srcptr raw(const Wide& z) noexcept { return z.backend().data(); }
+inline mpz_ptr raw(Wide& z) noexcept { return z.backend().data(); }
 
 // Every scaled position, velocity and radius of a narrow scene has magnitude ≤ 2^kNarrowBits, so a
 // difference dX or a sum Ra + Rb is below 2^126 (it fits Narrow with a bit to spare) and their squares below

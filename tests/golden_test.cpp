@@ -1,9 +1,9 @@
 // Golden trajectories: the engine's whole runs, hashed (impl/state_hash.hpp), against committed values.
 //
 // The same source is built against the default engine library (-O3 in the default Release build) and against
-// variants compiled at -O0, at -O2 and with -march=x86-64-v3 (AVX2 and hardware FMA in the correctly rounded update): every build must give
-// the same hashes, for every thread count (tests/CMakeLists.txt). Exact decisions and correct rounding make
-// the bits a property of the spec, not of the compiler.
+// variants compiled at -O0, at -O2 and with -march=x86-64-v3 (AVX2 and hardware FMA in the correctly rounded
+// update): every build must give the same hashes, for every thread count (tests/CMakeLists.txt). Exact
+// decisions and correct rounding make the bits a property of the spec, not of the compiler.
 //
 // Where the golden value comes from: for the bundled scene, the correctly rounded oracle's own trajectory,
 // recomputed here; the engine must match it. For the larger random scenes the oracle is too slow, so the
