@@ -24,6 +24,7 @@
 #include <limits>
 #include <numeric>
 #include <span>
+#include <tuple>
 #include <type_traits>
 
 namespace circles::impl {
@@ -57,6 +58,28 @@ constexpr double kRadiusAbsolute = 0x1p-1074;
 // the padding together at their edge instead (two points, one at the origin, are dropped by a speed term
 // short by 2^-47.6): tests/exact_engine_test.cpp, "Pairs kept across steps".
 constexpr auto kForever = std::numeric_limits<std::uint64_t>::max();
+// precedes(): approximations each within E of their coordinate decide the order when they are more than
+// 4E apart (the derivation is there; 2E would do). The test at its edge (tests/exact_engine_test.cpp,
+// "Walking approximations") fails for any factor below 400/418; between 1 and 2 no world can fail, since E
+// is twice the largest error a walk reaches.
+constexpr double kOrderSpread = 4;
+
+// The walk (ExactEngine::walk, docs/exact-engine.md): a fixed-width step adds w = V·RN(1/D) to a walked
+// slot's approximations instead of computing them from X + V. Per coordinate, with P the exact position and
+// a′ = RN(a + w),
+//   |a′ − P′| ≤ |a − P| + |w − v/60| + |a′ − (a + w)| ≤ E + (2^-50·W + 2^-1075) + u·A,
+// for W ≥ |w| (exact::approximate's bound) and A ≥ |a′| (a sum of two doubles rounds by at most u of its
+// result, and is exact where that is subnormal); u = 2^-53. walked() returns E′ ≥ that sum: each term is
+// taken twice, W·2^-49 + A·2^-52 + 2^-1073, so that its two products (exact, or off by η = 2^-1075 each
+// where subnormal, which 2^-1073 − 2^-1075 covers) and its two sums (a factor 1 − u each) still leave at
+// least the terms; E + x rounds to nearest, and the next double up is at least the exact E + x.
+constexpr double kWalkMove = 0x1p-49;
+constexpr double kWalkSum = 0x1p-52;
+constexpr double kWalkAbsolute = 0x1p-1073;
+double walked(double bound, double largest_move, double reach) noexcept {
+  const double growth = (largest_move * kWalkMove + reach * kWalkSum) + kWalkAbsolute;
+  return std::nextafter(bound + growth, std::numeric_limits<double>::infinity());
+}
 
 template <class Int>
 constexpr bool kFixed = !std::is_same_v<Int, Wide>;
@@ -218,7 +241,7 @@ void ExactEngine::start(Columns<Int> s, std::vector<double> radius, std::vector<
   key_.clear();
   state_ = std::move(s);
   choose_width();
-  std::visit([this](auto& columns) { this->update<false>(columns, true); }, state_);
+  std::visit([this](auto& columns) { this->settle(columns, 0); }, state_);
 }
 
 unsigned ExactEngine::width() const noexcept {
@@ -312,26 +335,42 @@ ExactEngine::Columns<To> ExactEngine::converted(const Columns<From>& s) {
 
 void ExactEngine::step() {
   if (narrow() && stats_.steps >= proven_until_) {
-    std::visit([this](auto& s) { update<false>(s, true); }, state_);  // the proof measures every position
+    std::visit([this](auto& s) { settle(s, pending_); }, state_);  // the proof measures every position
     choose_width();
   }
   std::visit([this](auto& s) { step_with(s); }, state_);
 }
 
 template <class Int>
+decltype(auto) ExactEngine::now(const std::vector<Int>& x, const std::vector<Int>& v, std::size_t t) const {
+  // |X + k·V| is the position of a later world, within the width's proven bound 2^b, and k·|V| ≤ 2^b too
+  // (k counts moves since the last proof); the stored X is then within 2^(b+1) (take_velocities), so nothing
+  // here leaves the type (b = 61 or 125). A GMP state has no pending moves.
+  if constexpr (kFixed<Int>)
+    return Int(x[t] + static_cast<Int>(pending_) * v[t]);
+  else
+    return static_cast<const Int&>(x[t]);
+}
+
+template <class Int>
 bool ExactEngine::precedes(const Columns<Int>& s, std::size_t a, std::size_t b) const noexcept {
   // (7) on integers scaled by D > 0 or L > 0: the same order as the rationals, then the index. The centre's
-  // coordinates are compared by their approximations first (filtered): exact::approximate is monotone in the
-  // integer (RN of the integer, or of its truncated mantissa and exponent, times or over the one positive
-  // denominator; RN, truncation and scaling by a power of 2 keep order), so a < between approximations is a <
-  // between the integers, and only equal approximations read the integers, which the pair test did not load.
-  // least_contacts compares slots of intersecting listed pairs only, whose approximations update() keeps fresh.
+  // coordinates are compared by their approximations first (filtered): least_contacts compares slots of
+  // intersecting listed pairs only, whose approximations are each within E = error_bound_ of the exact
+  // coordinate, so d = RN(a_b − a_a) > 4E gives a_b − a_a ≥ (1 − u)·d > 2E and P_b > P_a (a difference of
+  // doubles that is subnormal is exact; RN(4E) = 4E, or +∞, which decides nothing). Only approximations
+  // closer than that read the integers, which the pair test did not load.
   const Approximations& near = approx_;
-  for (const auto& [approximation, field] : {std::pair{&near.x, &s.x}, std::pair{&near.y, &s.y}}) {
-    if ((*approximation)[a] < (*approximation)[b]) return true;
-    if ((*approximation)[b] < (*approximation)[a]) return false;
-    if ((*field)[a] < (*field)[b]) return true;
-    if ((*field)[b] < (*field)[a]) return false;
+  const double apart = kOrderSpread * error_bound_;
+  for (const auto& [approximation, field, velocity] :
+       {std::tuple{&near.x, &s.x, &s.vx}, std::tuple{&near.y, &s.y, &s.vy}}) {
+    const double d = (*approximation)[b] - (*approximation)[a];
+    if (d > apart) return true;
+    if (-d > apart) return false;
+    const auto& at_a = now(*field, *velocity, a);
+    const auto& at_b = now(*field, *velocity, b);
+    if (at_a < at_b) return true;
+    if (at_b < at_a) return false;
   }
   for (const std::vector<Int>* field : {&s.vx, &s.vy}) {
     if ((*field)[a] < (*field)[b]) return true;
@@ -363,7 +402,8 @@ inline void ExactEngine::approximate(const Int& x, const Int& y, double& ax, dou
 template <class Int>
 bool ExactEngine::intersect_exactly(const Columns<Int>& s, std::size_t i, std::size_t j) const {
   const std::uint32_t ci = id_[i], cj = id_[j];
-  return exact::intersect_scaled(Int(s.r[ci] + s.r[cj]), Int(s.x[j] - s.x[i]), Int(s.y[j] - s.y[i]));
+  return exact::intersect_scaled(Int(s.r[ci] + s.r[cj]), Int(now(s.x, s.vx, j) - now(s.x, s.vx, i)),
+                                 Int(now(s.y, s.vy, j) - now(s.y, s.vy, i)));
 }
 
 template <class Int>
@@ -389,9 +429,14 @@ void ExactEngine::step_with(Columns<Int>& s) {
     for (std::vector<std::uint32_t>& list : touched_) list.clear();
   }
   take_velocities(s);
-  // Where most slots are in no listed pair, only the listed ones move and get their approximations now; the
-  // rest catch up at the next rebuild. A GMP state moves every slot: its overflow check reads them all.
-  update<true>(s, !kFixed<Int> || pairs_.lonely() * 4 < id_.size());
+  // Where at least a quarter of the slots are in no listed pair (a fixed width), X waits and the listed
+  // slots' approximations walk; the rest catch up at the next rebuild. Otherwise every slot moves now: in a
+  // dense scene a third of the slots change velocity every step, and each change would cost a waiting X an
+  // update of its own (take_velocities). A GMP state moves every slot: its overflow check reads them all.
+  if (kFixed<Int> && walking_)
+    walk();
+  else
+    settle(s, 1);
   ++stats_.steps;
   stats_.pairs_tested += tested;
   stats_.contacts += contacts;
@@ -425,75 +470,76 @@ void ExactEngine::take_velocities(Columns<Int>& s) {
       throw PositionOverflow(stats_.steps + 1, first / 2, first % 2 ? "py" : "px");
     }
   }
-  // Every new velocity first, read from world t (a slot's least contact may be touched too), then written.
-  s.next_vx.resize(n);
-  s.next_vy.resize(n);
+  // Every new velocity first, read from world t (a slot's least contact may be touched too), then written;
+  // with it, its move per step (the same double: approximate is a function of V). A contact whose velocity
+  // equals the slot's own changes nothing (in a dense scene most of them: circles in contact share one).
+  s.moves.resize(chunks);
+  Approximations& a = approx_;
   for_each_chunk(chunks, threads_, [&](std::size_t c) {
+    s.moves[c].clear();
     for (const std::uint32_t t : touched_[c]) {
-      s.next_vx[t] = s.vx[least_[t]];
-      s.next_vy[t] = s.vy[least_[t]];
+      const std::uint32_t l = least_[t];
+      least_[t] = t;  // only t reads least_[t]
+      if (s.vx[l] == s.vx[t] && s.vy[l] == s.vy[t]) continue;
+      // A walking list's contacts are between listed slots, whose moves walk() has computed.
+      if (kFixed<Int> && walking_)
+        s.moves[c].push_back({t, s.vx[l], s.vy[l], a.wx[l], a.wy[l]});
+      else
+        s.moves[c].push_back({t, s.vx[l], s.vy[l], 0, 0});
     }
   });
+  // X + k·V_old, the position now, must stay X′ + k·V_new with the k = pending_ moves X has not taken: X′ is
+  // X + k·V_old − k·V_new, within 2^(b+1) for the width's bound 2^b (both terms within 2^b, now()).
+  const Int k = static_cast<Int>(kFixed<Int> ? pending_ : 0);
   for_each_chunk(chunks, threads_, [&](std::size_t c) {
-    for (const std::uint32_t t : touched_[c]) {
-      std::swap(s.vx[t], s.next_vx[t]);
-      std::swap(s.vy[t], s.next_vy[t]);
-      least_[t] = t;
+    for (Move<Int>& m : s.moves[c]) {
+      const std::uint32_t t = m.slot;
+      if (kFixed<Int> && walking_) {
+        if (k != 0) {
+          s.x[t] = Int(s.x[t] + k * s.vx[t]) - k * m.vx;
+          s.y[t] = Int(s.y[t] + k * s.vy[t]) - k * m.vy;
+        }
+        a.wx[t] = m.wx;
+        a.wy[t] = m.wy;
+      }
+      std::swap(s.vx[t], m.vx);
+      std::swap(s.vy[t], m.vy);
     }
   });
 }
 
-template <bool Move, class Int>
-void ExactEngine::update(Columns<Int>& s, bool every) {
+template <class Int>
+void ExactEngine::settle(Columns<Int>& s, std::uint64_t moves) {
   const std::size_t n = id_.size();
   const std::size_t chunks = chunk_count(n, threads_);
   Approximations& a = approx_;
-  a.x.resize(n);
-  a.y.resize(n);
-  fresh_ = every;
-  // Without Move, every slot in no listed pair takes its pending moves at once, X ← X + k·V with k = pending_:
-  // the k moves it did not take, all with the velocity it had (a slot in no pair has no contact). |k·V| ≤
-  // k·max |V| fits the width: its proof covers every step since it was made, and this runs before each proof.
-  const Int k = static_cast<Int>(Move ? 0 : pending_);
-  if (Move && !every) ++pending_;
-  if (!Move && every) pending_ = 0;
+  for (std::vector<double>* column : {&a.x, &a.y}) column->resize(n);
+  // k·|V| ≤ k·max |V| fits the width: its proof covers every step since it was made, and this runs before
+  // each proof. For a GMP state moves is 1 (its step) or 0.
+  const Int k = static_cast<Int>(moves);
+  pending_ = 0;
   std::vector<std::array<double, 2>> largest(chunks);  // per chunk: max(|a_x|, |a_y|), the radius error
-  for_each_chunk(chunks, threads_, [&](std::size_t c) {
+  // One loop per kind of k, so that a dense step (k = 1) adds without multiplying 128-bit integers.
+  const auto settle_chunk = [&](std::size_t c, auto kind) {
     double reach = 0, radius = 0;
-    const auto refresh = [&](std::size_t t) {
+    for (std::size_t t = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1); t < e; ++t) {
+      if constexpr (kind() == 1) {
+        s.x[t] += s.vx[t];
+        s.y[t] += s.vy[t];
+      } else if constexpr (kind() == 2) {
+        s.x[t] += k * s.vx[t];
+        s.y[t] += k * s.vy[t];
+      }
       approximate(s.x[t], s.y[t], a.x[t], a.y[t]);
       reach = std::max({reach, std::fabs(a.x[t]), std::fabs(a.y[t])});
       if (!radii_exact_) radius = std::max(radius, radius_error_[id_[t]]);
-    };
-    const std::size_t b = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1);
-    if (every) {
-      auto listed = std::lower_bound(listed_.begin(), listed_.end(), b);
-      for (std::size_t t = b; t < e; ++t) {
-        if constexpr (Move) {
-          s.x[t] += s.vx[t];
-          s.y[t] += s.vy[t];
-        } else if (k != 0) {
-          if (listed != listed_.end() && *listed == t) {
-            ++listed;
-          } else {
-            s.x[t] += k * s.vx[t];
-            s.y[t] += k * s.vy[t];
-          }
-        }
-        refresh(t);
-      }
-    } else {
-      // Only the slots in a listed pair move now; the others, whose velocities cannot change before the next
-      // rebuild, take their pending moves there at once (update without Move).
-      for (auto t = std::lower_bound(listed_.begin(), listed_.end(), b); t != listed_.end() && *t < e; ++t) {
-        if constexpr (Move) {
-          s.x[*t] += s.vx[*t];
-          s.y[*t] += s.vy[*t];
-        }
-        refresh(*t);
-      }
     }
     largest[c] = {reach, radius};
+  };
+  for_each_chunk(chunks, threads_, [&](std::size_t c) {
+    if (moves == 0) settle_chunk(c, std::integral_constant<int, 0>{});
+    else if (moves == 1) settle_chunk(c, std::integral_constant<int, 1>{});
+    else settle_chunk(c, std::integral_constant<int, 2>{});
   });
   // error(m, ·) is RN of sums and products of non-negative terms, monotone in m and in the radius error, so
   // that of the largest of each is at least every slot's.
@@ -506,11 +552,27 @@ void ExactEngine::update(Columns<Int>& s, bool every) {
   error_bound_ = radii_exact_ ? centre : centre + radius;
 }
 
-std::vector<std::uint64_t> ExactEngine::pending_moves() const {
-  std::vector<std::uint64_t> moves(id_.size(), pending_);
-  if (pending_ > 0)
-    for (const std::uint32_t t : listed_) moves[t] = 0;
-  return moves;
+void ExactEngine::walk() {
+  const std::size_t n = id_.size();
+  const std::size_t chunks = chunk_count(n, threads_);
+  Approximations& a = approx_;
+  ++pending_;
+  std::vector<double> largest(chunks);  // per chunk: max(|a_x|, |a_y|) after the walk
+  for_each_chunk(chunks, threads_, [&](std::size_t c) {
+    double reach = 0;
+    double* const x = a.x.data();
+    double* const y = a.y.data();
+    const double* const wx = a.wx.data();
+    const double* const wy = a.wy.data();
+    const std::size_t b = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1);
+    for (auto t = std::lower_bound(listed_.begin(), listed_.end(), b); t != listed_.end() && *t < e; ++t) {
+      x[*t] += wx[*t];
+      y[*t] += wy[*t];
+      reach = std::max({reach, std::fabs(x[*t]), std::fabs(y[*t])});
+    }
+    largest[c] = reach;
+  });
+  error_bound_ = walked(error_bound_, largest_move_, *std::max_element(largest.begin(), largest.end()));
 }
 
 template <class Int>
@@ -541,7 +603,8 @@ void ExactEngine::rebuild(Columns<Int>& s) {
   // vmax alone (moves are exact), boxes of the radii inflated by it and by the centres' errors, keys, the
   // slots in their cell order, and the broad phase over the inflated radii, each pair it offers listed from
   // its first step.
-  if (!fresh_) update<false>(s, true);  // the pending moves and every slot's approximations
+  // The pending moves, and every slot's approximations from the integers (error() bounds each of them).
+  if (pending_ > 0) settle(s, pending_);
   const std::size_t n = id_.size();
   const std::size_t chunks = chunk_count(n, threads_);
   Approximations& a = approx_;
@@ -577,11 +640,11 @@ void ExactEngine::rebuild(Columns<Int>& s) {
   if (!sorted) {
     // One gather of every slot field into cell order. least_ is the identity between steps, so it stays.
     for (std::vector<Int>* field : {&s.x, &s.y, &s.vx, &s.vy}) {
-      s.next_vx.resize(n);
+      s.spare.resize(n);
       for_each_chunk(chunks, threads_, [&](std::size_t c) {
-        gather(s.next_vx, *field, permutation_, chunk_begin(n, chunks, c), chunk_begin(n, chunks, c + 1));
+        gather(s.spare, *field, permutation_, chunk_begin(n, chunks, c), chunk_begin(n, chunks, c + 1));
       });
-      field->swap(s.next_vx);
+      field->swap(s.spare);
     }
     scratch_.resize(n);
     for (std::vector<double>* field : {&a.x, &a.y, &a.rho, &inflated_}) {
@@ -611,6 +674,21 @@ void ExactEngine::rebuild(Columns<Int>& s) {
   listed_.clear();
   for (std::size_t t = 0; t < n; ++t)
     if (pairs_.listed(t)) listed_.push_back(static_cast<std::uint32_t>(t));
+  // A walking list: the moves per step of its listed slots, V·RN(1/D), each within 2^-50·|w| + 2^-1075 of
+  // v/60 (exact::approximate), and W, the largest of them; contacts copy them, so W holds for the list.
+  walking_ = kFixed<Int> && pairs_.lonely() * 4 >= n;
+  if constexpr (kFixed<Int>) {
+    if (walking_) {
+      a.wx.resize(n);
+      a.wy.resize(n);
+      double move = 0;
+      for (const std::uint32_t t : listed_) {
+        approximate(s.vx[t], s.vy[t], a.wx[t], a.wy[t]);
+        move = std::max({move, std::fabs(a.wx[t]), std::fabs(a.wy[t])});
+      }
+      largest_move_ = move;
+    }
+  }
   built_at_ = stats_.steps;
   stats_.pairs_listed += pairs_.size();
   ++stats_.rebuilds;
@@ -638,12 +716,10 @@ World ExactEngine::world() const {
           else
             return exact::round_quotient(x, velocity ? den_v_ : den_);
         };
-        const std::vector<std::uint64_t> moves = pending_moves();
         for (std::size_t t = 0; t < out.size(); ++t) {
           const std::uint32_t k = id_[t];
-          const Int m = static_cast<Int>(moves[t]);
-          out[k] = {round(Int(s.x[t] + m * s.vx[t]), false), round(Int(s.y[t] + m * s.vy[t]), false),
-                    round(s.vx[t], true), round(s.vy[t], true), round(s.r[k], false)};
+          out[k] = {round(now(s.x, s.vx, t), false), round(now(s.y, s.vy, t), false), round(s.vx[t], true),
+                    round(s.vy[t], true), round(s.r[k], false)};
         }
       },
       state_);
@@ -654,20 +730,38 @@ spec::Sequence ExactEngine::exact() const {
   spec::Sequence out(size());
   std::visit(
       [&](const auto& s) {
-        using Int = typename std::decay_t<decltype(s.x)>::value_type;
         const spec::Q d(den_), l(den_v_);
-        const std::vector<std::uint64_t> moves = pending_moves();
         for (std::size_t t = 0; t < out.size(); ++t) {
           const std::uint32_t k = id_[t];
-          const Int m = static_cast<Int>(moves[t]);
-          out[k] = spec::circle(spec::Q(convert<Wide>(Int(s.x[t] + m * s.vx[t]))) / d,
-                                spec::Q(convert<Wide>(Int(s.y[t] + m * s.vy[t]))) / d,
+          out[k] = spec::circle(spec::Q(convert<Wide>(now(s.x, s.vx, t))) / d,
+                                spec::Q(convert<Wide>(now(s.y, s.vy, t))) / d,
                                 spec::Q(convert<Wide>(s.vx[t])) / l, spec::Q(convert<Wide>(s.vy[t])) / l,
                                 spec::Q(convert<Wide>(s.r[k])) / d);
         }
       },
       state_);
   return out;
+}
+
+bool ExactEngine::approximations_hold() const {
+  return std::visit(
+      [&](const auto& s) {
+        const spec::Q d(den_), e = spec::exact(error_bound_);
+        const auto within = [&](double approximation, const spec::Q& exact) {
+          return abs(spec::exact(approximation) - exact) <= e;
+        };
+        const auto holds = [&](std::size_t t) {
+          const std::uint32_t k = id_[t];
+          return within(approx_.x[t], spec::Q(convert<Wide>(now(s.x, s.vx, t))) / d) &&
+                 within(approx_.y[t], spec::Q(convert<Wide>(now(s.y, s.vy, t))) / d) &&
+                 within(approx_.rho[t], spec::Q(convert<Wide>(s.r[k])) / d);
+        };
+        if (walking_) return std::all_of(listed_.begin(), listed_.end(), holds);
+        for (std::size_t t = 0; t < size(); ++t)
+          if (!holds(t)) return false;
+        return true;
+      },
+      state_);
 }
 
 std::vector<std::array<std::string, 5>> ExactEngine::rationals() const {

@@ -68,30 +68,52 @@ class ExactEngine {
   // For the debug validator and tests: the pairs {i, j}, i < j (circle indices), that the next step's pair
   // test would consider, once each (the list it keeps, or the one it would build). O(n + pairs).
   std::vector<CandidatePair> candidates() const;
+  // For the debug validator and tests: true when the doubles the next step's filters read are where their
+  // bound says, checked in rationals: for every slot the step may test (each in a listed pair while the list
+  // walks, else every slot), the approximate centre is within the engine's error bound of the exact one on
+  // each axis and the approximate radius within it of the exact radius. O(n) rational arithmetic.
+  bool approximations_hold() const;
+  // True while the kept list walks: the approximations of its circles move by a double per step while the
+  // integers wait (docs/exact-engine.md, "Walking approximations").
+  bool walks() const noexcept { return walking_; }
 
   static constexpr unsigned kMaxThreads = BasicEngine<ExactArithmetic>::kMaxThreads;
 
  private:
   // The integers of the state. Positions and velocities by slot (cell order, slot t holds circle id_[t]), as
   // the double engine keeps its doubles; radii never change and are read only by exact decisions and ties of
-  // the order, so they stay by circle index. next_vx and next_vy are scratch: the new velocities of the
-  // slots a step touches, and the rebuild's gather target.
+  // the order, so they stay by circle index. spare is the rebuild's gather target.
+  // A velocity a step gives slot `slot` (its least contact's), with its move per step (fixed widths).
+  template <class Int>
+  struct Move {
+    std::uint32_t slot;
+    Int vx, vy;
+    double wx, wy;
+  };
   template <class Int>
   struct Columns {
-    std::vector<Int> x, y, vx, vy, r, next_vx, next_vy;
+    std::vector<Int> x, y, vx, vy, r, spare;
+    std::vector<std::vector<Move<Int>>> moves;  // per chunk, the step's changes of velocity
   };
-  // By slot, doubles near the exact state: circle id_[t]'s centre is within e of (x[t], y[t]) on each axis
-  // and its radius within e of rho[t], for e = error(max(|x[t]|, |y[t]|), id_[t]). The pair test's filter
-  // reads them every step, with error_bound_ ≥ every e; the rebuild's boxes and gaps too. Between rebuilds
-  // only the slots in a listed pair may be kept up to date (fresh_ false; the rebuild refreshes the rest).
+  // By slot, doubles near the exact state: circle id_[t]'s centre is within error_bound_ of (x[t], y[t]) on
+  // each axis and its radius within it of rho[t], for every slot a step may test (those in a listed pair, or
+  // every slot). The pair test's filter and the order read them every step; the rebuild's boxes and gaps read
+  // them as settle() leaves them, each within error(max(|x[t]|, |y[t]|), id_[t]). In a walking list, wx and
+  // wy are the listed slots' moves per step, V·RN(1/D) ≈ v/60, and a step walks x ← RN(x + wx) rather than
+  // compute x from X (docs/exact-engine.md, "Walking approximations").
   struct Approximations {
-    std::vector<double> x, y, rho;
+    std::vector<double> x, y, rho, wx, wy;
   };
-  // A bound on the errors of the approximations (x, y) and ρ of `circle`, for m = max(|x|, |y|).
+  // A bound on the errors of the approximations (x, y) and ρ of `circle` as settle() computes them, for
+  // m = max(|x|, |y|).
   double error(double m, std::uint32_t circle) const noexcept;
   // The approximations of one circle's centre from its integers (exact::approximate).
   template <class Int>
   void approximate(const Int& x, const Int& y, double& ax, double& ay) const noexcept;
+  // X of slot t now: the integers plus the moves they have not taken (pending_ of them, fixed widths only).
+  // Fixed widths give a value, GMP a reference to X itself.
+  template <class Int>
+  decltype(auto) now(const std::vector<Int>& x, const std::vector<Int>& v, std::size_t t) const;
   // The same integers in another width (each value must fit).
   template <class To, class From>
   static Columns<To> converted(const Columns<From>& s);
@@ -123,14 +145,13 @@ class ExactEngine {
   // state first checks that no new position rounds to ±infinity (PositionOverflow, nothing changed).
   template <class Int>
   void take_velocities(Columns<Int>& s);
-  // For every slot (every) or for the slots in a listed pair only (the others' moves wait in pending_): with
-  // Move, X ← X + V in place, without it the pending moves X ← X + pending_·V of every slot that has them;
-  // then their approximations, and error_bound_ over those.
-  template <bool Move, class Int>
-  void update(Columns<Int>& s, bool every);
-  // By slot, the moves not taken yet (pending_ for a slot in no listed pair, else 0).
-  std::vector<std::uint64_t> pending_moves() const;
-
+  // Every slot takes `moves` moves, X ← X + moves·V (the pending ones, or one for a step that does not walk),
+  // and its approximations from the integers; error_bound_ is then error() of the largest.
+  template <class Int>
+  void settle(Columns<Int>& s, std::uint64_t moves);
+  // A step of a walking list: X waits (++pending_), and the approximations of the slots in a listed pair walk
+  // one move, x ← RN(x + wx); error_bound_ grows by the walk's error (walked()).
+  void walk();
   EngineOptions options_;
   unsigned threads_ = 1;
   EngineStats stats_;
@@ -154,11 +175,14 @@ class ExactEngine {
   CellOrder order_;
   PairList pairs_;
   Approximations approx_;
-  double error_bound_ = 0;  // at least the error bound of every slot update kept up to date
-  bool fresh_ = false;      // every slot's approximations are up to date
+  double error_bound_ = 0;  // at least the error of every approximation a step may test
+  // The list walks (fixed width, at least a quarter of the slots in no listed pair): X and Y wait, pending_
+  // moves behind, and the listed slots' approximations walk (walk()).
+  bool walking_ = false;
+  double largest_move_ = 0;  // W ≥ every listed |wx|, |wy| of a walking list (contacts only copy them)
   std::vector<std::uint32_t> listed_;  // the slots in a listed pair, ascending
   double vmax_ = -1;                    // speed_bound of the first world (−1: not yet computed)
-  std::uint64_t pending_ = 0;           // steps whose moves the slots in no listed pair have not taken
+  std::uint64_t pending_ = 0;           // steps whose moves X and Y have not taken (a walking list; every slot)
   std::vector<std::uint32_t> id_, permutation_, least_, scratch_id_;
   std::vector<std::vector<std::uint32_t>> touched_;
   // The rebuild's radii (inflated by the skin and the centres' errors; padded by the errors alone) and

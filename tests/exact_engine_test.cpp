@@ -474,6 +474,66 @@ void lockstep(Engine& doubles, std::vector<ExactEngine>& engines, int steps) {
   }
 }
 
+// ── Walking approximations ───────────────────────────────────────────────────────────────────────────
+//
+// A kept list in which at least a quarter of the circles are lonely walks: the listed circles' approximations
+// take a double move a step, a ← RN(a + w), while the integers wait, and the error bound grows by walked()'s
+// term (docs/exact-engine.md, "Walking approximations"). The world below puts a walk and the order's filter at
+// their edges. Moves of w = 2^-33 from 2^20, whose spacing is 2^-32, are ties that round to the even 2^20: a
+// circle moving right at v = 15·2^-31 (v/60 = 2^-33) keeps its approximation at 2^20 while the exact centre
+// gains 2^-33 a step, the largest lag one rounding allows (u·|a|, u = 2^-53); one moving left from an even
+// neighbour lags the other way. In units of 2^-33 the bound starts at 2^-49·2^20 = 16 and grows by
+// 2^-52·2^20 = 2 a step (twice the lag), so a lag of k after k steps holds; a growth of a quarter of that
+// (2^-54) fails after 32 steps, none after 16.
+//
+// A, pinned to the right-mover by its partner A′ (A′ precedes C, so A keeps A′'s velocity), and B, pinned to
+// the left-mover by B′, both touch C and start 400 units apart on x. C takes the velocity of the least of A
+// and B: their exact centres meet on x after 200 steps (y puts A first) and pass after 201, so A's in steps 1
+// to 201 and B's from step 202, while the approximations still put A 400 units before B. The order's filter
+// must leave that to the integers: 400 against a bound of 16 + 2·201, so a filter that trusts a difference
+// above s·E for s < 400/418 takes A's velocity at step 202.
+constexpr double kEven = 0x1p20, kLag = 0x1p-32;
+constexpr double kRightward = 15 * 0x1p-31, kRadiusC = 77.5;
+Circles walking_world() {
+  const double b = kEven + 200 * kLag;  // B: 2^20 + 400·2^-33, an even multiple of the spacing 2^-32
+  return {{kEven, 0, kRightward, 0, 1},              // A
+          {kEven - 1.5, 0, kRightward, 0, 1},        // A′: overlaps A, left of C's reach
+          {b, 100, -kRightward, 0, 1},               // B
+          {b - 1.5, 100, -kRightward, 0, 1},         // B′
+          {kEven + 60, 50, 0, 0, kRadiusC},          // C: 78.1 from A and B (≤ 78.5), 79.3 from A′ and B′
+          {0, -1000, 0, 0, 1}, {0, -2000, 0, 0, 1}, {0, -3000, 0, 0, 1}};  // lonely
+}
+
+TEST(exact_engine, walking_approximations_stay_within_the_bound_when_every_move_rounds_to_a_tie) {
+  const Circles w = walking_world();
+  ExactEngine engine(World(w), kept(300));
+  spec::Sequence oracle = engine.exact();
+  ASSERT_TRUE(engine.approximations_hold());
+  for (int t = 1; t <= 260; ++t) {
+    engine.step();
+    oracle = spec::resolved_step(oracle);
+    ASSERT_TRUE(engine.walks()) << "step " << t;
+    ASSERT_TRUE(engine.approximations_hold()) << "step " << t;
+    ASSERT_EQ(engine.exact(), oracle) << "step " << t;
+  }
+  EXPECT_EQ(engine.stats().rebuilds, 1u);
+  // world() rounds the exact state, which the walk never touches: A is 260 moves of 2^-33 from 2^20.
+  EXPECT_EQ(engine.world().circles()[0][0], kEven + 130 * kLag);
+}
+
+TEST(exact_engine, walking_circles_are_ordered_by_their_integers_when_their_approximations_are_within_the_bound) {
+  // C's velocity is A's (rightward) until step 201 and B's (leftward) from step 202, as the oracle says.
+  const Circles w = walking_world();
+  ExactEngine engine(World(w), kept(300));
+  spec::Sequence oracle = engine.exact();
+  for (int t = 1; t <= 230; ++t) {
+    engine.step();
+    oracle = spec::resolved_step(oracle);
+    ASSERT_EQ(engine.exact(), oracle) << "step " << t;
+    ASSERT_EQ(engine.world().circles()[4][2], t <= 201 ? kRightward : -kRightward) << "step " << t;
+  }
+}
+
 TEST(exact_engine, every_horizon_and_thread_count_gives_the_same_state_as_the_double_engine_where_moves_are_exact) {
   // 12000 circles at 10% coverage (several chunks on two threads, contacts across chunk boundaries), every
   // move exact in doubles: the double engine is the oracle's trajectory here. Horizons 0 to 64, the
@@ -497,9 +557,10 @@ TEST(exact_engine, every_horizon_and_thread_count_gives_the_same_state_as_the_do
   EXPECT_GT(engines[0].stats().lonely_circle_steps, 0u);
 }
 
-TEST(exact_engine, moves_lonely_circles_late_and_still_equals_the_double_engine_at_every_step) {
-  // 0.1% coverage: most circles are in no listed pair and take their moves at the next rebuild (update),
-  // while world() and exact() add the pending ones. Every move exact, so the double engine is the oracle.
+TEST(exact_engine, lets_every_integer_wait_in_a_walking_list_and_still_equals_the_double_engine_at_every_step) {
+  // 0.1% coverage: most circles are in no listed pair, so the list walks and every slot takes its moves at
+  // the next rebuild (settle), while world() and exact() add the pending ones. Every move exact, so the
+  // double engine is the oracle.
   const Circles w = exact_move_scene(20000, 0.001);
   Engine doubles(World(w), EngineOptions{.threads = 1});
   std::vector<ExactEngine> engines;
@@ -512,7 +573,7 @@ TEST(exact_engine, moves_lonely_circles_late_and_still_equals_the_double_engine_
 }
 
 TEST(exact_engine, keeps_its_proven_width_through_the_steps_of_a_kept_list) {
-  // The width scenes above with lists that span the switch: positions update in place between rebuilds, and
+  // The width scenes above with lists that span the switch: positions move or wait between rebuilds, and
   // the width still changes exactly when its proof runs out, the state equal to the oracle's at every step.
   for (const std::uint64_t h : {1u, 16u, 64u, 100u}) {
     for (const auto& [v, from, to] : {std::tuple{0x1p55, 64u, 128u}, std::tuple{0x1p119, 128u, 0u}}) {
@@ -530,13 +591,13 @@ TEST(exact_engine, keeps_its_proven_width_through_the_steps_of_a_kept_list) {
 }
 
 TEST(exact_engine, catches_its_lonely_circles_up_before_a_width_proof_in_the_middle_of_a_kept_list) {
-  // Half the circles are in no listed pair, so the list's steps move the other half alone; the lonely ones take
-  // their pending moves at once before the proof (update), which must measure them where they are and leave
-  // the listed pair, which has met and parted by then, where it is. D = 60 (every value an integer, the far
-  // one a multiple of 8) and max |V| = 60: the far circle, lonely, starts at X = 60·far = 2^61 − 1,472 and
-  // gains 60 a step, so the first 64-bit proof holds for 24 steps, inside the list's horizon of 40, and the
-  // one at step 24, from X = 2^61 − 32, moves the state to 128 bits. Measured without its 24 pending moves,
-  // it would stay at 64.
+  // Half the circles are in no listed pair, so the list walks and every integer waits; all take their
+  // pending moves at once before the proof (settle), which must measure them where they are, the listed pair
+  // (which has met, swapped velocities with 8 moves pending, and parted by then) included. D = 60 (every
+  // value an integer, the far one a multiple of 8) and max |V| = 60: the far circle, lonely, starts at
+  // X = 60·far = 2^61 − 1,472 and gains 60 a step, so the first 64-bit proof holds for 24 steps, inside the
+  // list's horizon of 40, and the one at step 24, from X = 2^61 − 32, moves the state to 128 bits. Measured
+  // without its 24 pending moves, it would stay at 64.
   const double far = 38430716820228208;  // 60·far = 2^61 − 1,472
   ExactEngine engine(World({{-10, 0, 60, 0, 1}, {10, 0, -60, 0, 1}, {0, 1000, 0, 60, 1}, {far, 0, 60, 0, 1}}),
                      kept(40));
