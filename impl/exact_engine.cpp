@@ -313,6 +313,7 @@ void ExactEngine::choose_width() {
     proven_until_ = stats_.steps + narrow;
   } else {
     to(Wide{});
+    walking_ = false;  // GMP states settle every step (step_with), so no approximation walks any more
     return;
   }
   narrow_den_ = static_cast<NarrowMagnitude>(narrow_of(den_));

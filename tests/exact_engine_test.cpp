@@ -585,6 +585,8 @@ TEST(exact_engine, keeps_its_proven_width_through_the_steps_of_a_kept_list) {
         oracle = spec::resolved_step(oracle);
         ASSERT_EQ(engine.exact(), oracle) << "H = " << h << ", step " << t;
         ASSERT_EQ(engine.width(), t <= 64 ? from : to) << "H = " << h << ", step " << t;
+        ASSERT_TRUE(engine.narrow() || !engine.walks()) << "H = " << h << ", step " << t << ": GMP walks";
+        ASSERT_TRUE(engine.approximations_hold()) << "H = " << h << ", step " << t;
       }
     }
   }
@@ -612,6 +614,30 @@ TEST(exact_engine, catches_its_lonely_circles_up_before_a_width_proof_in_the_mid
   EXPECT_EQ(engine.stats().rebuilds, 1u);
   EXPECT_EQ(engine.stats().contacts, 1u) << "the pair touches at step 9 alone, then parts";
   EXPECT_EQ(engine.stats().lonely_circle_steps, 40u * 2);
+}
+
+TEST(exact_engine, stops_walking_when_the_state_moves_to_gmp_integers_in_the_middle_of_a_kept_list) {
+  // The test above at the 128-bit limit: a radius of 2^-60 makes D = 60·2^60 and V = 60·2^60 for |v| = 60.
+  // The far circle starts at X = 2^125 − 2^69 (p = 128·(2^56 − 1)/15, a double), so the first proof holds
+  // for ⌊2^69/V⌋ = 8 steps and the one at step 8, from X = 2^125 − 32·2^60, finds no 128-bit headroom: GMP
+  // from step 9, in the middle of the list's horizon of 40, with the pair meeting at step 9. GMP states
+  // settle every step, so the list stops walking and every approximation is computed from the integers.
+  const double far = 128.0 * static_cast<double>(((std::uint64_t{1} << 56) - 1) / 15);  // exact: below 2^53
+  ExactEngine engine(World({{-10, 0, 60, 0, 1}, {10, 0, -60, 0, 1}, {0, 1000, 0, 60, 1}, {far, 0, 60, 0, 1},
+                            {0, -1000, 0, 0, 0x1p-60}}),
+                     kept(40));
+  ASSERT_EQ(engine.width(), 128u);
+  spec::Sequence oracle = engine.exact();
+  for (int t = 1; t <= 40; ++t) {
+    engine.step();
+    oracle = spec::resolved_step(oracle);
+    ASSERT_EQ(engine.exact(), oracle) << "step " << t;
+    ASSERT_EQ(engine.width(), t <= 8 ? 128u : 0u) << "step " << t;
+    ASSERT_EQ(engine.walks(), t <= 8) << "step " << t;
+    ASSERT_TRUE(engine.approximations_hold()) << "step " << t;
+  }
+  EXPECT_EQ(engine.stats().rebuilds, 1u);
+  EXPECT_EQ(engine.stats().contacts, 1u);
 }
 
 TEST(exact_engine, counts_its_work_as_the_double_engine_does) {
