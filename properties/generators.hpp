@@ -33,7 +33,9 @@ rc::Gen<spec::Circle> circle(spec::Radii radii);
 // A world of 0 … max_size circles of circle(radii), where half the circles relate to an earlier one: an
 // exact copy, a copy with one field redrawn or moved (so the two are comparable under (6)), or a circle
 // touching it exactly (along an axis or a (3, 4, 5) direction). So equal circles, ties, contacts and
-// tangencies are likely. Shrinks by dropping circles, simplifying them and undoing relations.
+// tangencies are likely. Shrinks by dropping circles, simplifying them and undoing relations. The fields are
+// rationals, not doubles: a circle tangent to one near DBL_MAX can lie beyond the double range, where a
+// consumer of doubles must refuse the world (engines throw spec::OutsideC).
 rc::Gen<std::vector<spec::Circle>> world(spec::Radii radii, std::size_t max_size = 8);
 
 // world(radii, max_size) with repeated circles removed (first occurrences kept, in order): a set S.
