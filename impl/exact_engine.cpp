@@ -13,6 +13,7 @@
 // The slots keep their order between rebuilds: a step moves no circle in memory.
 #include "impl/exact_engine.hpp"
 
+#include "impl/exact_bounds.hpp"
 #include "impl/pair_list_impl.hpp"
 #include "impl/detail/exact_int.hpp"
 
@@ -36,15 +37,7 @@ using exact::NarrowMagnitude;
 using exact::Wide;
 using exact::Word;
 
-// The approximations: the approximate centre is within 2^-50·|a| + 2^-1075 of the exact one per coordinate
-// (exact::approximate), so c = RN(RN(max(|ax|, |ay|)·2^-49) + 2^-1073) is at least twice that error (the
-// factor of two covers c's own two roundings, and those of adding a radius error below).
-constexpr double kBoxRelative = 0x1p-49;
-constexpr double kBoxAbsolute = 0x1p-1073;
-// A radius that is no double: ρ = RN(r) is within u·ρ + η of it (u = 2^-53, η = 2^-1075); the bound kept is
-// RN(2^-52·ρ + 2^-1074), twice that, so that RN(c + it) still bounds the sum of both errors.
-constexpr double kRadiusRelative = 0x1p-52;
-constexpr double kRadiusAbsolute = 0x1p-1074;
+// The approximations' error bounds (centres, radii, the walk) are in impl/exact_bounds.hpp.
 // The list's skin (rebuild) is the speed term alone, step_bound(H, vmax, 0, 0) per step (impl/pair_list.hpp):
 // X ← X + V is exact, so a circle moves by |v|/60 exactly. vmax = max norm_upper(v′) over the velocities'
 // approximations v′ (speed_bound), each coordinate within 2^-50·|v′_i| + 2^-1075 of v, so
@@ -63,23 +56,6 @@ constexpr auto kForever = std::numeric_limits<std::uint64_t>::max();
 // "Walking approximations") fails for any factor below 400/418; between 1 and 2 no world can fail, since E
 // is twice the largest error a walk reaches.
 constexpr double kOrderSpread = 4;
-
-// The walk (ExactEngine::walk, docs/exact-engine.md): a fixed-width step adds w = V·RN(1/D) to a walked
-// slot's approximations instead of computing them from X + V. Per coordinate, with P the exact position and
-// a′ = RN(a + w),
-//   |a′ − P′| ≤ |a − P| + |w − v/60| + |a′ − (a + w)| ≤ E + (2^-50·W + 2^-1075) + u·A,
-// for W ≥ |w| (exact::approximate's bound) and A ≥ |a′| (a sum of two doubles rounds by at most u of its
-// result, and is exact where that is subnormal); u = 2^-53. walked() returns E′ ≥ that sum: each term is
-// taken twice, W·2^-49 + A·2^-52 + 2^-1073, so that its two products (exact, or off by η = 2^-1075 each
-// where subnormal, which 2^-1073 − 2^-1075 covers) and its two sums (a factor 1 − u each) still leave at
-// least the terms; E + x rounds to nearest, and the next double up is at least the exact E + x.
-constexpr double kWalkMove = 0x1p-49;
-constexpr double kWalkSum = 0x1p-52;
-constexpr double kWalkAbsolute = 0x1p-1073;
-double walked(double bound, double largest_move, double reach) noexcept {
-  const double growth = (largest_move * kWalkMove + reach * kWalkSum) + kWalkAbsolute;
-  return std::nextafter(bound + growth, std::numeric_limits<double>::infinity());
-}
 
 template <class Int>
 constexpr bool kFixed = !std::is_same_v<Int, Wide>;
@@ -207,7 +183,7 @@ void ExactEngine::from_rationals(const spec::Sequence& circles) {
       mpz_lcm(raw(l), raw(l), raw(boost::multiprecision::denominator(*fields[f])));
     }
     radius[k] = rounded[4];
-    radius_error[k] = spec::exact(rounded[4]) == c.r ? 0.0 : radius[k] * kRadiusRelative + kRadiusAbsolute;
+    radius_error[k] = spec::exact(rounded[4]) == c.r ? 0.0 : exact::radius_bound(radius[k]);
   }
   den_v_ = l;
   den_ = 60 * l;
@@ -383,10 +359,9 @@ bool ExactEngine::precedes(const Columns<Int>& s, std::size_t a, std::size_t b) 
   return i < j;
 }
 
-// The centre's error bound (kBoxRelative) for a largest coordinate m, plus the radius's.
+// The error bound for a largest coordinate m and circle's radius (exact::error_bound).
 inline double ExactEngine::error(double m, std::uint32_t circle) const noexcept {
-  const double centre = m * kBoxRelative + kBoxAbsolute;
-  return radii_exact_ ? centre : centre + radius_error_[circle];
+  return exact::error_bound(m, radii_exact_ ? 0.0 : radius_error_[circle]);
 }
 
 template <class Int>
@@ -549,8 +524,7 @@ void ExactEngine::settle(Columns<Int>& s, std::uint64_t moves) {
     reach = std::max(reach, m);
     radius = std::max(radius, r);
   }
-  const double centre = reach * kBoxRelative + kBoxAbsolute;
-  error_bound_ = radii_exact_ ? centre : centre + radius;
+  error_bound_ = exact::error_bound(reach, radii_exact_ ? 0.0 : radius);
 }
 
 void ExactEngine::walk() {
@@ -573,7 +547,7 @@ void ExactEngine::walk() {
     }
     largest[c] = reach;
   });
-  error_bound_ = walked(error_bound_, largest_move_, *std::max_element(largest.begin(), largest.end()));
+  error_bound_ = exact::walked(error_bound_, largest_move_, *std::max_element(largest.begin(), largest.end()));
 }
 
 template <class Int>

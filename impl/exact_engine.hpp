@@ -150,7 +150,7 @@ class ExactEngine {
   template <class Int>
   void settle(Columns<Int>& s, std::uint64_t moves);
   // A step of a walking list: X waits (++pending_), and the approximations of the slots in a listed pair walk
-  // one move, x ← RN(x + wx); error_bound_ grows by the walk's error (walked()).
+  // one move, x ← RN(x + wx); error_bound_ grows by the walk's error (exact::walked, impl/exact_bounds.hpp).
   void walk();
   EngineOptions options_;
   unsigned threads_ = 1;

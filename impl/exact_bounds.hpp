@@ -1,0 +1,57 @@
+// The exact engine's error bounds on its approximations (impl/exact_engine.cpp): each a named constant with
+// its derivation beside it, and the one function that applies it. Each function is RN of sums and products of
+// non-negative doubles, so it is monotone in every argument: the bound of the largest input bounds them all.
+// tests/exact_bounds_test.cpp recomputes every claim below in exact rationals, at the inputs where it is
+// tightest, so that a constant lowered past what its claim needs fails there.
+//   u = 2^-53 (the unit roundoff), η = 2^-1075 (half the least subnormal).
+#pragma once
+
+#include <cmath>
+#include <limits>
+
+namespace circles::impl::exact {
+
+// A centre. exact::approximate puts each coordinate within 2^-50·|a| + η of the exact one, a being the
+// approximation. The bound of a largest coordinate m is c = RN(RN(m·2^-49) + 2^-1073).
+//   Claim: c ≥ 2^-49·m and c ≥ 2^-1073, twice each term, so c ≥ 2·(2^-50·m + η) less nothing that matters:
+//   the factor of two covers c's own roundings and those of adding a radius's bound to it (error_bound).
+// m·2^-49 is exact unless it is subnormal, where it is off by at most η, which the 2^-1073 (= 4η) added
+// covers; RN of a sum of non-negative doubles is at least each of them.
+inline constexpr double kBoxRelative = 0x1p-49;
+inline constexpr double kBoxAbsolute = 0x1p-1073;
+inline double centre_bound(double m) noexcept { return m * kBoxRelative + kBoxAbsolute; }
+
+// A radius that is no double: ρ = RN(r) is within u·ρ + η of it. The bound kept is RN(RN(2^-52·ρ) + 2^-1074).
+//   Claim: it is ≥ 2^-52·ρ and ≥ 2^-1074, twice each term, so that RN(c + it) still bounds the sum of both
+//   errors (error_bound).
+inline constexpr double kRadiusRelative = 0x1p-52;
+inline constexpr double kRadiusAbsolute = 0x1p-1074;
+inline double radius_bound(double rho) noexcept { return rho * kRadiusRelative + kRadiusAbsolute; }
+
+// E for a step: the centres' bound for a largest coordinate m, plus the largest radius's bound (0 when every
+// radius is a double). Claim: at least the sum of the two errors they bound, each with its factor of two
+// less two roundings: RN(c + ρ_e) ≥ (1 − u)·(c + ρ_e) for normal sums, exact for subnormal ones.
+inline double error_bound(double m, double radius) noexcept { return centre_bound(m) + radius; }
+
+// The walk (ExactEngine::walk, docs/exact-engine.md): a fixed-width step adds w = V·RN(1/D) to a walked
+// slot's approximations instead of computing them from X + V. Per coordinate, with P the exact position and
+// a′ = RN(a + w),
+//   |a′ − P′| ≤ |a − P| + |w − v/60| + |a′ − (a + w)| ≤ E + (2^-50·W + η) + u·A,
+// for W ≥ |w| (exact::approximate's bound) and A ≥ |a′| (a sum of two doubles rounds by at most u of its
+// result, and is exact where that is subnormal).
+//   Claim: walked(E, W, A) ≥ E + 2^-50·W + η + u·A, exactly.
+// Each term is taken twice, W·2^-49 + A·2^-52 + 2^-1073, so that its two products (exact, or off by η each
+// where subnormal, which 2^-1073 − 2^-1075 covers) and its two sums (a factor 1 − u each) still leave at
+// least the terms; E + x rounds to nearest, and the next double up is at least the exact E + x. The tests
+// find the claim's edges at 2^-50 for kWalkMove (W = 1) and 2^-53 for kWalkSum (A = 1). kWalkAbsolute is
+// slack there (no input tried fails without it: the next double above RN(s) is at least s + η); it stays so
+// that the derivation does not lean on that.
+inline constexpr double kWalkMove = 0x1p-49;
+inline constexpr double kWalkSum = 0x1p-52;
+inline constexpr double kWalkAbsolute = 0x1p-1073;
+inline double walked(double bound, double largest_move, double reach) noexcept {
+  const double growth = (largest_move * kWalkMove + reach * kWalkSum) + kWalkAbsolute;
+  return std::nextafter(bound + growth, std::numeric_limits<double>::infinity());
+}
+
+}  // namespace circles::impl::exact
