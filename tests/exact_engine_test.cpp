@@ -45,35 +45,32 @@ using circles::testing::exact_of;
 using circles::testing::nearest;
 
 
-// The first circle and field (px before py) whose nearest double is infinite, if any.
-std::optional<std::pair<std::size_t, std::string>> first_overflow(const spec::Sequence& w) {
+// The first circle and field, in field order up to `last`, whose nearest double is infinite, if any.
+std::optional<std::pair<std::size_t, spec::Field>> first_infinite(const spec::Sequence& w, spec::Field last) {
   for (std::size_t k = 0; k < w.size(); ++k) {
-    if (std::isinf(spec::nearest_double(w[k].p.x()))) return std::pair{k, std::string("px")};
-    if (std::isinf(spec::nearest_double(w[k].p.y()))) return std::pair{k, std::string("py")};
+    const std::array<double, 5> rounded = spec::nearest_doubles(w[k]);
+    for (std::size_t f = 0; f <= static_cast<std::size_t>(last); ++f)
+      if (std::isinf(rounded[f])) return std::pair{k, spec::Field(f)};
   }
   return std::nullopt;
 }
 
-// Whether the engine refuses w, having checked how: gen::world's rationals can lie beyond the double range (a
-// circle tangent to one near DBL_MAX, the shrunk case of a failure CI found), where the engine's world() could
-// not follow, so the constructor must throw OutsideC naming the first circle and field, in field order.
-bool refused(const spec::Sequence& w, EngineOptions options) {
-  for (std::size_t k = 0; k < w.size(); ++k) {
-    const std::array<double, 5> rounded = spec::nearest_doubles(w[k]);
-    for (std::size_t f = 0; f < 5; ++f) {
-      if (std::isfinite(rounded[f])) continue;
-      RC_TAG("refused: a field beyond the double range");
-      try {
-        const ExactEngine engine(w, options);
-        RC_FAIL("no OutsideC for circle " + std::to_string(k) + ", field " + spec::name(spec::Field(f)));
-      } catch (const spec::OutsideC& e) {
-        RC_ASSERT(e.index == k);
-        RC_ASSERT(e.field == spec::Field(f));
-      }
-      return true;
-    }
+// The engine made from w, or std::nullopt where it must refuse w, having checked how: gen::world's rationals
+// can lie beyond the double range (a circle tangent to one near DBL_MAX, the shrunk case of a failure CI
+// found), where the engine's world() could not follow, so the constructor must throw OutsideC naming the
+// first such circle and field, in field order.
+std::optional<ExactEngine> made(const spec::Sequence& w, EngineOptions options) {
+  const auto beyond = first_infinite(w, spec::Field::r);
+  if (!beyond) return ExactEngine(w, options);
+  RC_TAG("refused: a field beyond the double range");
+  try {
+    const ExactEngine engine(w, options);
+    RC_FAIL("no OutsideC for circle " + std::to_string(beyond->first) + ", field " + spec::name(beyond->second));
+  } catch (const spec::OutsideC& e) {
+    RC_ASSERT(e.index == beyond->first);
+    RC_ASSERT(e.field == beyond->second);
   }
-  return false;
+  return std::nullopt;
 }
 
 // Runs `engine` and the oracle from w side by side for `steps` steps (or to an overflow), with RC_ASSERT.
@@ -81,14 +78,14 @@ void follow(ExactEngine& engine, spec::Sequence w, int steps) {
   RC_ASSERT(engine.exact() == w);
   for (int t = 1; t <= steps; ++t) {
     const spec::Sequence next = spec::resolved_step(w);
-    if (const auto overflow = first_overflow(next)) {
+    if (const auto overflow = first_infinite(next, spec::Field::py)) {
       try {
         engine.step();
         RC_FAIL("no PositionOverflow at step " + std::to_string(t));
       } catch (const PositionOverflow& e) {
         RC_ASSERT(e.step == static_cast<std::uint64_t>(t));
         RC_ASSERT(e.index == overflow->first);
-        RC_ASSERT(std::string(e.field) == overflow->second);
+        RC_ASSERT(std::string(e.field) == spec::name(overflow->second));
       }
       RC_ASSERT(engine.exact() == w);
       RC_ASSERT(engine.steps() == static_cast<std::uint64_t>(t - 1));
@@ -106,9 +103,8 @@ void follow(ExactEngine& engine, spec::Sequence w, int steps) {
 RC_GTEST_PROP(exact_engine, follows_the_oracle_exactly_on_rational_worlds_for_up_to_100_steps, ()) {
   const spec::Sequence w = *gen::world(spec::Radii::non_negative);
   const int steps = *rc::gen::inRange(1, 101);
-  if (refused(w, EngineOptions{.threads = 1})) return;
-  ExactEngine engine(w, EngineOptions{.threads = 1});
-  follow(engine, w, steps);
+  std::optional<ExactEngine> engine = made(w, EngineOptions{.threads = 1});
+  if (engine) follow(*engine, w, steps);
 }
 
 RC_GTEST_PROP(exact_engine, follows_the_oracle_exactly_on_worlds_of_any_finite_doubles_for_up_to_100_steps, ()) {
@@ -140,9 +136,8 @@ rc::Gen<spec::Sequence> tangency_after_some_steps() {
 
 RC_GTEST_PROP(exact_engine, follows_the_oracle_through_a_tangency_reached_after_some_steps, ()) {
   const spec::Sequence w = *tangency_after_some_steps();
-  if (refused(w, EngineOptions{.threads = 1})) return;
-  ExactEngine engine(w, EngineOptions{.threads = 1});
-  follow(engine, w, 70);
+  std::optional<ExactEngine> engine = made(w, EngineOptions{.threads = 1});
+  if (engine) follow(*engine, w, 70);
 }
 
 TEST(exact_engine, meets_exactly_at_the_designed_tangency_and_not_one_step_before) {
@@ -473,18 +468,16 @@ RC_GTEST_PROP(exact_engine, follows_the_oracle_through_a_tangency_with_any_horiz
   const spec::Sequence w = *tangency_after_some_steps();
   const auto horizon = *rc::gen::inRange<std::uint64_t>(0, 65);
   const bool keep = *rc::gen::arbitrary<bool>();
-  if (refused(w, EngineOptions{.threads = 1, .keep_pairs = keep, .horizon = horizon})) return;
-  ExactEngine engine(w, EngineOptions{.threads = 1, .keep_pairs = keep, .horizon = horizon});
-  follow(engine, w, 70);
+  std::optional<ExactEngine> engine = made(w, EngineOptions{.threads = 1, .keep_pairs = keep, .horizon = horizon});
+  if (engine) follow(*engine, w, 70);
 }
 
 RC_GTEST_PROP(exact_engine, follows_the_oracle_on_rational_worlds_with_any_horizon_or_none, ()) {
   const spec::Sequence w = *gen::world(spec::Radii::non_negative);
   const auto horizon = *rc::gen::inRange<std::uint64_t>(0, 65);
   const bool keep = *rc::gen::arbitrary<bool>();
-  if (refused(w, EngineOptions{.threads = 1, .keep_pairs = keep, .horizon = horizon})) return;
-  ExactEngine engine(w, EngineOptions{.threads = 1, .keep_pairs = keep, .horizon = horizon});
-  follow(engine, w, *rc::gen::inRange(1, 61));
+  std::optional<ExactEngine> engine = made(w, EngineOptions{.threads = 1, .keep_pairs = keep, .horizon = horizon});
+  if (engine) follow(*engine, w, *rc::gen::inRange(1, 61));
 }
 
 // Steps the double engine and `engines` side by side; every engine's world() must equal the double engine's
