@@ -30,6 +30,7 @@ conform::Options check_options(const ConformCommandOptions& given) {
   options.seed = given.seed;
   options.steps = given.steps;
   options.keep_going = given.keep_going;
+  options.max_circles = given.max_circles;
   options.level = properties::parse_level(given.level);
   options.profile = properties::parse_profile(given.profile);
   std::tie(options.shard, options.shards) = conform::parse_shard(given.shard);

@@ -6,6 +6,9 @@
 // applied, the verdict printed (cli/conform_report.hpp) and the reports for CI written (cli/report.hpp).
 #pragma once
 
+#include "properties/boundaries.hpp"
+
+#include <cstddef>
 #include <cstdint>
 #include <ostream>
 #include <string>
@@ -21,6 +24,7 @@ struct ConformCommandOptions {
   bool threads_given = false;
   std::string exec;               // --exec COMMAND: check this program instead of an engine ("" for none)
   double timeout = 10;            // --timeout: seconds to wait for each answer of the program
+  std::size_t max_circles = properties::kDefaultMaxCircles;  // --max-circles: the most circles of a big world
   std::string level = "exact";    // --level: exact, faithful or ulps:K (properties::parse_level)
   std::string profile = "resolved";  // --profile: resolved or literal
   std::string shard = "0/1";      // --shard i/n

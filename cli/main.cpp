@@ -162,9 +162,15 @@ int main(int argc, char** argv) {
                       "Replay every counterexample stored in DIR first, and store a new one there (with its picture)");
   conform->add_option("--svg", conform_options.svg,
                       "Draw a counterexample's picture in FILE (default: beside it in --save DIR, else none)");
-  conform->add_option("--timeout", conform_options.timeout, "Seconds to wait for each answer")
+  conform->add_option("--timeout", conform_options.timeout,
+                      "Seconds to wait for each answer, up to 512 circles; (n/512)^2 times as long for n circles above")
       ->capture_default_str()
       ->check(CLI::Range(0.001, 3600.0));
+  conform->add_option("--max-circles", conform_options.max_circles,
+                      "The most circles of a big world (docs/conform.md, Big worlds): 4097 crosses every power of two "
+                      "up to 4096; fast programs go to 100000 or more")
+      ->capture_default_str()
+      ->check(CLI::Range(circles::properties::kMinMaxCircles, std::size_t{1} << 31));
   conform->add_option("--case", conform_options.only_case, "Check only this case (to replay a counterexample)")
       ->check(CLI::Range(std::uint64_t{0}, kMaxCases));
   conform->add_option("--report", conform_options.report,

@@ -132,10 +132,11 @@ std::string ProcessCandidate::exit_status(bool wait) {
   return status_;
 }
 
-std::string ProcessCandidate::read_line(std::uint64_t id) {
-  const auto give_up = std::chrono::steady_clock::now() + deadline_;
-  for (;;) {
-    if (const auto newline = buffer_.find('\n'); newline != std::string::npos) {
+std::string ProcessCandidate::read_line(std::uint64_t id, std::chrono::milliseconds deadline) {
+  const auto give_up = std::chrono::steady_clock::now() + deadline;
+  // buffer_[0, scanned) holds no newline: an answer of megabytes, read 64 KiB at a time, is searched once.
+  for (std::size_t scanned = 0;;) {
+    if (const auto newline = buffer_.find('\n', scanned); newline != std::string::npos) {
       std::string line = buffer_.substr(0, newline);
       buffer_.erase(0, newline + 1);
       return line;
@@ -144,7 +145,7 @@ std::string ProcessCandidate::read_line(std::uint64_t id) {
     if (left.count() <= 0) {
       kill_group();
       throw BrokenCandidate(name() + " gave no answer to request " + std::to_string(id) + " within " +
-                            seconds(deadline_) + " (it was stopped)");
+                            seconds(deadline) + " (it was stopped)");
     }
     pollfd ready{from_child_, POLLIN, 0};
     const int polled = poll(&ready, 1, static_cast<int>(std::min<long long>(left.count(), 1000)));
@@ -159,6 +160,7 @@ std::string ProcessCandidate::read_line(std::uint64_t id) {
       throw BrokenCandidate(name() + " " + status + " before answering request " + std::to_string(id) +
                             (buffer_.empty() ? "" : " (it wrote a line without a newline: \"" + buffer_.substr(0, 80) + "\")"));
     }
+    scanned = buffer_.size();
     buffer_.append(chunk, static_cast<std::size_t>(got));
   }
 }
@@ -187,12 +189,22 @@ void ProcessCandidate::write_requests(std::string_view lines, std::span<const st
   }
 }
 
+std::chrono::milliseconds ProcessCandidate::deadline_for(std::chrono::milliseconds deadline, std::size_t circles) {
+  if (circles <= kDeadlineCircles) return deadline;
+  const double scale = static_cast<double>(circles) / kDeadlineCircles;
+  const double ms = static_cast<double>(deadline.count()) * scale * scale;
+  return std::chrono::milliseconds(ms < 1e15 ? static_cast<std::int64_t>(ms) : std::int64_t{1'000'000'000'000'000});
+}
+
 Circles ProcessCandidate::read_answer(const Circles& world, std::uint64_t id) {
-  const std::string text = read_line(id);
+  std::string text = read_line(id, deadline_for(deadline_, world.size()));
   ++lines_;
   Line line;
   try {
-    line = parse_line(text, lines_, kId, Reading::answer);
+    // A plain line, as most answers are, by the trace reader's fast path; anything else (a fault to name, a
+    // NaN, an unknown key) by parse_line, which reads the same line to the same values (formats/plain_line.hpp).
+    if (auto plain = plain_.read(text, kId)) line = std::move(*plain);
+    else line = parse_line(text, lines_, kId, Reading::answer);
   } catch (const ProtocolError& e) {
     throw BrokenCandidate(name() + " wrote a malformed answer to request " + std::to_string(id) + ": " + e.what());
   }

@@ -11,6 +11,7 @@
 #pragma once
 
 #include "conform/engines.hpp"
+#include "formats/plain_line.hpp"
 #include "formats/protocol.hpp"
 
 #include <chrono>
@@ -101,6 +102,12 @@ class ProcessCandidate : public Candidate {
   // How many times the program was started afresh after a fault.
   std::uint64_t restarts() const { return restarts_; }
 
+  // The deadline for the answer to a world of `circles` circles: `deadline` up to kDeadlineCircles circles,
+  // and above it `deadline` · (circles / kDeadlineCircles)², as an O(n²) step's time grows: 16 times as long at
+  // 2048 circles, 64 times at 4097 (so 10 s becomes 640 s, time for a step in rationals that tests every pair).
+  static std::chrono::milliseconds deadline_for(std::chrono::milliseconds deadline, std::size_t circles);
+  static constexpr std::size_t kDeadlineCircles = 512;
+
   // The most bytes of request lines written before their answers are read. Why a bound, and why this one: we
   // write a whole batch before reading any answer, while the candidate may answer each line as it reads it, so
   // its answers pile up in its stdout pipe until we read them; if they filled that pipe, it would block
@@ -120,7 +127,7 @@ class ProcessCandidate : public Candidate {
   // BrokenCandidate at the first request without an answer.
   void answer_batches(std::span<const Circles> worlds, std::uint64_t first_id, std::vector<Circles>& answers);
   // The next line the program writes, without its newline, or BrokenCandidate at the deadline or at EOF.
-  std::string read_line(std::uint64_t id);
+  std::string read_line(std::uint64_t id, std::chrono::milliseconds deadline);
   // "exited with status 3", "was killed by signal 11", or "" while it runs.
   std::string exit_status(bool wait);
   // Writes all of `lines`, the requests first_id, first_id + 1, … (`ends` holds the offset just past each).
@@ -134,6 +141,7 @@ class ProcessCandidate : public Candidate {
   pid_t pid_ = -1;
   int to_child_ = -1, from_child_ = -1;
   std::string buffer_;
+  formats::PlainLineReader plain_;
   std::size_t lines_ = 0;
   std::size_t unanswered_ = 0;  // requests written whose answers were not read
   std::uint64_t restarts_ = 0;

@@ -22,8 +22,13 @@ namespace {
 
 using properties::NoAnswer;
 
-// Shrinking asks the candidate at most this many worlds: enough for worlds of 8 circles, bounded for a slow one.
+// Shrinking asks the candidate at most this many worlds: enough for worlds of 8 circles, and for delta debugging
+// a world of 10^5 circles down to a dozen (about k log2(n/k) + k queries for k circles, then one per circle
+// left to show that none can go), bounded for a slow program.
 constexpr int kMaxShrinkQueries = 2000;
+// The most circles of a small family's world (properties/boundaries.hpp): bigger worlds shrink by delta
+// debugging over their circles before anything else.
+constexpr std::size_t kSmallWorld = 8;
 // Simplifying the numbers of the shrunk world asks at most this many more: 8 circles × 5 fields × the up to 71
 // values of simpler_values is 2840, but a field stops at its first simpler value that still fails, most at 0 or
 // an integer, and a number that is already simple has few simpler values.
@@ -157,26 +162,32 @@ class Checker {
 // Case c's family and generator: the families of the profile in turn.
 class Cases {
  public:
-  explicit Cases(Profile profile) : families_(properties::families(profile)) {
+  explicit Cases(Profile profile, std::size_t max_circles = properties::kDefaultMaxCircles)
+      : families_(properties::families(profile)), max_circles_(max_circles) {
     for (const properties::Family f : families_) gens_.push_back(properties::gen::boundary_world(f, profile));
   }
   std::span<const properties::Family> families() const { return families_; }
   std::size_t family(std::uint64_t c) const { return static_cast<std::size_t>(c % families_.size()); }
   // Case c's world from its random stream. RapidCheck's sizes cycle 0 … 99 over a run (the families'
-  // generators ignore it).
+  // generators ignore it). A big family's world is its round's (c / F), which does not shrink: Run::shrink
+  // removes its circles by delta debugging instead.
   rc::Shrinkable<Circles> world(std::uint64_t c, const rc::Random& random) const {
+    const properties::Family f = families_[family(c)];
+    if (properties::is_big(f))
+      return rc::shrinkable::just(properties::gen::big_world(f, c / families_.size(), max_circles_, random));
     return gens_[family(c)](random, static_cast<int>(c % rc::kNominalSize));
   }
 
  private:
   std::span<const properties::Family> families_;
+  std::size_t max_circles_;
   std::vector<rc::Gen<Circles>> gens_;
 };
 
 }  // namespace
 
-std::vector<Circles> case_worlds(std::uint64_t seed, std::uint64_t cases, Profile profile) {
-  const Cases all(profile);
+std::vector<Circles> case_worlds(std::uint64_t seed, std::uint64_t cases, Profile profile, std::size_t max_circles) {
+  const Cases all(profile, max_circles);
   rc::Random stream(seed);
   std::vector<Circles> worlds;
   for (std::uint64_t c = 0; c < cases; ++c) worlds.push_back(all.world(c, stream.split()).value());
@@ -267,7 +278,9 @@ class Run {
  private:
   std::string replay_options() const {
     return " --level " + options_.level.text() + (options_.steps > 1 ? " --steps " + std::to_string(options_.steps) : "") +
-           (options_.profile == Profile::literal ? " --profile literal" : "");
+           (options_.profile == Profile::literal ? " --profile literal" : "") +
+           (options_.max_circles != properties::kDefaultMaxCircles ? " --max-circles " + std::to_string(options_.max_circles)
+                                                                   : std::string());
   }
 
   bool skipped(properties::Family family) const {
@@ -401,24 +414,24 @@ class Run {
     Counterexample counterexample;
     counterexample.shrink_path = {world.value()};
     counterexample.circles_before = world.value().size();
+    int queries = 0;
+    // A world bigger than the small families' loses its circles by delta debugging first; a small family's
+    // world then shrinks through its generator's shrinks (RapidCheck's), which drop circles one at a time and
+    // simplify the family's integers.
+    if (world.value().size() > kSmallWorld) {
+      Circles smaller = world.value();
+      remove_circles(smaller, steps, failure, counterexample, queries);
+      world = rc::shrinkable::just(std::move(smaller));
+    }
     // Shrink: take the first simpler world that still fails with the same kind of value (same_kind), until none
     // does (or the budget is spent).
-    int queries = 0;
     for (bool progress = true; progress && queries < kMaxShrinkQueries;) {
       progress = false;
       auto candidates = world.shrinks();
       while (auto next = candidates.next()) {
         if (++queries > kMaxShrinkQueries) break;
-        Ending e = Ending::checked;
-        std::optional<Failure> f;
-        try {
-          f = checker_.run(next->value(), steps, e);
-        } catch (const BrokenCandidate&) {
-          // A simpler world on which the candidate breaks (crashes, hangs, writes a malformed line) does not
-          // show the wrong answer being shrunk; the next is asked of the program started afresh.
-          continue;
-        }
-        if (f && same_kind(*f, failure)) {
+        std::optional<Failure> f = still_fails(next->value(), steps, failure);
+        if (f) {
           world = *next;
           failure = std::move(*f);
           counterexample.shrink_path.push_back(world.value());
@@ -444,6 +457,51 @@ class Run {
     fail(std::move(failure), std::move(counterexample), &verdict_.families[family]);
   }
 
+  // The failure of the case chained `steps` steps from w, if it fails with the same kind of value as `failure`
+  // (same_kind); nothing if it passes, fails otherwise, or breaks the candidate (a world on which the candidate
+  // crashes, hangs or writes a malformed line does not show the wrong answer being shrunk; the next world is
+  // asked of the program started afresh).
+  std::optional<Failure> still_fails(const Circles& w, std::uint64_t steps, const Failure& failure) {
+    Ending e = Ending::checked;
+    std::optional<Failure> f;
+    try {
+      f = checker_.run(w, steps, e);
+    } catch (const BrokenCandidate&) {
+      return std::nullopt;
+    }
+    if (f && same_kind(*f, failure)) return f;
+    return std::nullopt;
+  }
+
+  // Delta debugging (Zeller and Hildebrandt's ddmin) over the circles of `world`, in their order: remove a
+  // chunk of them, of n chunks, while the case still fails; when no chunk can go, split finer (n doubles) down
+  // to single circles. It ends 1-minimal, a world from which no single circle can be removed while it still
+  // fails, unless the budget of queries runs out first. A failure that needs k circles of a world of n takes
+  // about k log2(n/k) + k queries of ever smaller worlds.
+  void remove_circles(Circles& world, std::uint64_t steps, Failure& failure, Counterexample& counterexample,
+                      int& queries) {
+    for (std::size_t chunks = 2; world.size() > 1 && queries < kMaxShrinkQueries;) {
+      chunks = std::min(chunks, world.size());
+      bool removed = false;
+      for (std::size_t k = 0; k < chunks && queries < kMaxShrinkQueries; ++k) {
+        const std::size_t from = world.size() * k / chunks, to = world.size() * (k + 1) / chunks;
+        Circles rest(world.begin(), world.begin() + static_cast<std::ptrdiff_t>(from));
+        rest.insert(rest.end(), world.begin() + static_cast<std::ptrdiff_t>(to), world.end());
+        ++queries;
+        if (auto f = still_fails(rest, steps, failure)) {
+          world = std::move(rest);
+          failure = std::move(*f);
+          counterexample.shrink_path.push_back(world);
+          removed = true;
+          break;
+        }
+      }
+      if (removed) chunks = std::max<std::size_t>(chunks - 1, 2);
+      else if (chunks == world.size()) break;
+      else chunks *= 2;
+    }
+  }
+
   // After shrinking: each number of the world, in turn, replaced by its simplest value (simpler_values) with
   // which the case still fails, pass after pass until no number changes or the budget is spent. A world on
   // which the candidate breaks is passed over, as in shrinking.
@@ -457,17 +515,10 @@ class Run {
             if (++queries > kMaxSimplifyQueries) return;
             Circles simpler = world;
             simpler[k][f] = y;
-            Ending e = Ending::checked;
-            std::optional<Failure> still;
-            try {
-              still = checker_.run(simpler, steps, e);
-            } catch (const BrokenCandidate&) {
-              continue;
-            }
             // The same failure, made simpler: at the same step, in the same field (a stateful candidate may
             // fail otherwise on a world that happens to equal one of its earlier answers), of the same kind.
-            if (!still || still->step != failure.step || still->difference.field != failure.difference.field ||
-                !same_kind(*still, failure))
+            std::optional<Failure> still = still_fails(simpler, steps, failure);
+            if (!still || still->step != failure.step || still->difference.field != failure.difference.field)
               continue;
             world = std::move(simpler);
             failure = std::move(*still);
@@ -503,7 +554,7 @@ class Run {
   const Options& options_;
   Verdict& verdict_;
   Checker checker_;
-  const Cases cases_{options_.profile};
+  const Cases cases_{options_.profile, options_.max_circles};
 };
 
 }  // namespace

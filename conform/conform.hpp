@@ -63,6 +63,9 @@ struct Options {
   // Families not checked (--families, --skip-families): their cases are neither drawn nor asked, their stored
   // counterexamples not replayed, and their status is `skipped`. The other cases keep their worlds.
   std::vector<properties::Family> skip{};
+  // The most circles of a big family's world (--max-circles; properties::gen::big_world): the default crosses
+  // every power of two up to 4096; a fast program can be taken to 10^5 or 10^6 circles.
+  std::size_t max_circles = properties::kDefaultMaxCircles;
 };
 
 // "A,B,..." → those families of `profile`, for --families and --skip-families. Throws std::invalid_argument
@@ -142,7 +145,8 @@ struct Verdict {
 
 // The worlds of cases 0 … cases − 1 of `seed` in `profile`, each as conform draws it (before any shrinking),
 // whatever the shard: for tools that hand out conform's worlds (cli/vectors.hpp).
-std::vector<Circles> case_worlds(std::uint64_t seed, std::uint64_t cases, Profile profile = Profile::resolved);
+std::vector<Circles> case_worlds(std::uint64_t seed, std::uint64_t cases, Profile profile = Profile::resolved,
+                                 std::size_t max_circles = properties::kDefaultMaxCircles);
 
 // The verdict cannot_check, for `error`, of a candidate not checked at all (a program that cannot start): no
 // case run, every family not reached.

@@ -20,7 +20,9 @@ constexpr Family kAll[] = {
     Family::tie_px,       Family::tie_p,           Family::tie_p_vx,           Family::tie_p_v,
     Family::duplicates,   Family::incomparable,    Family::mutual_contacts,    Family::tangent_after_step,
     Family::square_overflow, Family::subnormals,   Family::cancellation,       Family::signed_zeros,
-    Family::zero_radius,
+    Family::zero_radius,  Family::sizes,           Family::crowds,             Family::cell_crowds,
+    Family::radius_spread, Family::long_rows,      Family::index_bits,         Family::order_borders,
+    Family::big_chains,
 };
 constexpr Family kLiteral[] = {
     Family::lattice,      Family::random_doubles,  Family::tangency,           Family::ulp_nudge,
@@ -158,6 +160,14 @@ const char* name(Family family) {
     case Family::cancellation: return "cancellation";
     case Family::signed_zeros: return "signed-zeros";
     case Family::zero_radius: return "zero-radius";
+    case Family::sizes: return "sizes";
+    case Family::crowds: return "crowds";
+    case Family::cell_crowds: return "cell-crowds";
+    case Family::radius_spread: return "radius-spread";
+    case Family::long_rows: return "long-rows";
+    case Family::index_bits: return "index-bits";
+    case Family::order_borders: return "order-borders";
+    case Family::big_chains: return "big-chains";
   }
   return "?";
 }
@@ -167,7 +177,12 @@ std::span<const Family> families(Profile profile) {
   return kAll;
 }
 
-std::uint64_t steps_to_decide(Family family) { return family == Family::tangent_after_step ? 2 : 1; }
+bool is_big(Family family) { return family >= Family::sizes; }
+
+std::uint64_t steps_to_decide(Family family) {
+  if (family == Family::big_chains) return 3;
+  return family == Family::tangent_after_step ? 2 : 1;
+}
 
 std::optional<std::string> outside_literal_domain(const Circles& w) {
   if (auto v = first_violation(w)) return std::move(v->reason);
@@ -177,6 +192,11 @@ std::optional<std::string> outside_literal_domain(const Circles& w) {
 namespace gen {
 
 rc::Gen<Circles> boundary_world(Family family, Profile profile) {
+  if (is_big(family))
+    return rc::gen::noShrink(rc::gen::exec([family] {
+      const auto round = *rc::gen::inRange<std::uint64_t>(0, 16);
+      return big_world(family, round, 512, rc::Random(*rc::gen::arbitrary<std::uint64_t>()));
+    }));
   // The family's circles, cut to the literal domain (before shuffling, so that bystanders, placed last, go
   // first), then shuffled: the order of a world must not matter to a step, and a shuffle shrinks to none.
   const rc::Gen<Circles> shuffled = rc::gen::exec([family, profile] {

@@ -57,6 +57,17 @@ enum class Family {
   cancellation,        // p ≈ −v/60: the exact p + v/60 is tiny next to p, nudged by up to 3 ulps
   signed_zeros,        // +0 and −0 in every field, equal by value
   zero_radius,         // r = 0: points on a circle's boundary, coincident points (resolved only)
+  // The big families (resolved only): worlds of hundreds to thousands of circles, each built around the place
+  // where one kind of optimized step (a broad phase, threads, fixed-size buffers, narrow indices) goes wrong.
+  // docs/conform.md ("Big worlds") says which kind each aims at and why it catches it.
+  sizes,               // p − 1, p and p + 1 circles for every power of two p from 16 up to the largest allowed
+  crowds,              // hubs touched by 9 … 257 circles each, the least contact at every rank of the index order
+  cell_crowds,         // 5 … 1000 centres in one aligned square of side 2^e, for any e, dense or tangent
+  radius_spread,       // radii over seven decimal orders, the big ones last in the index order, across x quartiles
+  long_rows,           // one or two rows of tangent circles up to 2048 wide, far out, and their transpose
+  index_bits,          // 2^b + 1 or more circles (b = 8, 16); the least contact i >= 2^b beside a wrong one, i mod 2^b
+  order_borders,       // a contact across every half, quarter and eighth border of the index, x and y orders
+  big_chains,          // random worlds of 64 … 512 moving circles, chained 3 steps
 };
 
 // A short name, for reports and RC_TAG: "tangency", "tie-p-vx", "square-overflow".
@@ -66,18 +77,35 @@ const char* name(Family family);
 // duplicates and zero_radius, which are outside its domain.
 std::span<const Family> families(Profile profile);
 
+// Whether `family` is one of the big families (sizes … big_chains).
+bool is_big(Family family);
+
+// The most circles a big world has, unless told otherwise (`circles conform --max-circles`): 2^12 + 1, so that
+// the sizes family crosses every power of two from 16 to 4096.
+inline constexpr std::size_t kDefaultMaxCircles = 4097;
+// The least the limit can be: 2^8 + 64, so that index_bits always crosses 2^8.
+inline constexpr std::size_t kMinMaxCircles = 320;
+
 // The steps a chain from a world of `family` needs to reach the family's boundary: 2 for tangent_after_step,
 // whose circles become tangent in w_1, a tangency only the step from w_1 decides; 1 for every other family,
 // whose boundary is in w_0. `circles conform` and step_conforms chain each case at least this far, whatever
-// steps they are asked for, so that the default of one step decides every family's boundary.
+// steps they are asked for, so that the default of one step decides every family's boundary. 3 for big_chains,
+// whose worlds are chained so that whatever a program keeps from one request to the next is used.
 std::uint64_t steps_to_decide(Family family);
 
 namespace gen {
 
-// A world of `family` in `profile`: at most 8 circles, finite doubles, r >= 0 (r > 0 and inside
+// A world of `family` in `profile`. A big family's: gen::big_world at a round drawn from 0 … 15 and at most
+// 512 circles, which does not shrink. Any other family's: at most 8 circles, finite doubles, r >= 0 (r > 0 and inside
 // outside_literal_domain's domain for literal: a drawn world that is not is cut down, circle by circle,
 // until it is). Shrinks by dropping circles, then through the family's integers.
 rc::Gen<Circles> boundary_world(Family family, Profile profile);
+
+// The world of the big family's `round`-th case (its cases counted from 0), at most max(max_circles,
+// kMinMaxCircles) circles, from `random`: the first rounds go up in size until the family's largest world, the
+// rounds after come mostly small (docs/conform.md, "Big worlds"). Not shuffled: each family places its circles
+// in the index order on purpose. properties/detail/big_worlds.cpp builds them.
+Circles big_world(Family family, std::uint64_t round, std::size_t max_circles, rc::Random random);
 
 // A family of `profile` (uniformly; shrinks towards lattice) and a world of it.
 rc::Gen<std::pair<Family, Circles>> boundary_case(Profile profile);

@@ -36,7 +36,8 @@ struct Level {
 Level parse_level(std::string_view text);
 
 // What a conforming step answers for w: the exact step rounded to nearest, each coordinate (resolved:
-// impl::step_all_pairs, which tests/engine_test.cpp holds equal to the oracle; literal: the oracle's literal
+// impl::step_all_pairs up to 64 circles, the double engine's step above, both of which tests/engine_test.cpp
+// holds equal to the oracle; literal: the oracle's literal
 // f (4) for each circle). No answer when a position leaves the double range (the protocol cannot carry it),
 // or, in the literal profile, when w is outside its domain (outside_literal_domain).
 enum class NoAnswer { overflow, outside_literal_domain };

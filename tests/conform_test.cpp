@@ -224,9 +224,27 @@ TEST(conform, the_double_engine_conforms_over_chained_steps) {
 TEST(conform, its_fast_reference_agrees_with_the_oracle_on_the_worlds_it_draws) {
   // conform compares answers with impl::step_all_pairs, not with the oracle itself (50-100 times slower): with
   // the oracle as the candidate, every case must conform, over chained steps too.
+  // The big families' worlds, of thousands of circles, would take the oracle hours: the small ones here, and the
+  // big ones against every pair tested, below.
   EngineCandidate oracle(engine("oracle"), 1);
-  const Verdict v = check(oracle, Options{{0}, 3000, 21, 2, 0, 1, {}});
+  Options options{{0}, 3000, 21, 2, 0, 1, {}};
+  options.skip = testing::big_families();
+  const Verdict v = check(oracle, options);
   EXPECT_EQ(v.outcome, Outcome::conforms) << describe(v);
+}
+
+TEST(conform, its_fast_reference_for_big_worlds_agrees_with_every_pair_tested) {
+  // Above 64 circles conform's expected answer is the double engine's step, not step_all_pairs: with
+  // step_all_pairs as the candidate, every case of the big families must conform, over chained steps too.
+  FunctionCandidate all_pairs(testing::right_step);
+  Options options{{0}, 500, 22, 2, 0, 1, {}};
+  for (const properties::Family f : properties::families(Profile::resolved))
+    if (!properties::is_big(f)) options.skip.push_back(f);
+  const Verdict v = check(all_pairs, options);
+  EXPECT_EQ(v.outcome, Outcome::conforms) << describe(v);
+  std::uint64_t big = 0;
+  for (const FamilyResult& f : v.families) big += properties::is_big(f.family) ? f.checked : 0;
+  EXPECT_EQ(big, 160u);
 }
 
 TEST(conform, rejects_a_strict_intersect_with_a_counterexample_shrunk_to_two_tangent_circles) {
@@ -283,25 +301,26 @@ TEST(conform, chains_the_tangent_after_step_family_to_the_step_that_decides_its_
 }
 
 TEST(conform, shards_take_whole_rounds_of_every_family_without_overlap) {
-  // Cases come in rounds of one per family; shard i/n takes the rounds q with q mod n = i. With the 17
-  // families of the resolved profile, 100 cases are rounds 0 … 4 (17 each) and 15 cases of round 5: shard
-  // 0/2 asks rounds 0, 2 and 4, shard 1/2 rounds 1, 3 and the partial 5.
-  ASSERT_EQ(properties::families(Profile::resolved).size(), 17u);
+  // Cases come in rounds of one per family; shard i/n takes the rounds q with q mod n = i. With the 25
+  // families of the resolved profile, 110 cases are rounds 0 … 3 (25 each) and 10 cases of round 4: shard
+  // 0/2 asks rounds 0, 2 and the partial 4, shard 1/2 rounds 1 and 3.
+  ASSERT_EQ(properties::families(Profile::resolved).size(), 25u);
   std::uint64_t asked = 0;
   FunctionCandidate counting([&](const Circles& w) {
     ++asked;
-    return spec::resolved_step_rounded(w);
+    return testing::right_step(w);
   });
-  const Verdict first_verdict = check(counting, Options{{0}, 100, 3, 1, 0, 2, {}});
+  const Verdict first_verdict = check(counting, Options{{0}, 110, 3, 1, 0, 2, {}});
   const std::uint64_t first = asked;
-  const Verdict second_verdict = check(counting, Options{{0}, 100, 3, 1, 1, 2, {}});
-  EXPECT_EQ(first_verdict.cases + second_verdict.cases, 100u);
-  // One request per case, and a second for each case of tangent-after-step (family 11, chained two steps):
-  // 3 of them in each shard.
-  EXPECT_EQ(first, 51u + 3);
-  EXPECT_EQ(asked, 100u + 6);
-  // Each shard saw every family: three cases of each in shard 0.
-  for (const FamilyResult& f : first_verdict.families) EXPECT_EQ(f.checked, 3u) << properties::name(f.family);
+  const Verdict second_verdict = check(counting, Options{{0}, 110, 3, 1, 1, 2, {}});
+  EXPECT_EQ(first_verdict.cases + second_verdict.cases, 110u);
+  // One request per case, a second for each case of tangent-after-step (family 11, chained two steps) and a
+  // second and third for each of big-chains (family 24, chained three): 2 and 2 in shard 0, 2 and 2 in shard 1.
+  EXPECT_EQ(first, 60u + 2 + 2 * 2);
+  EXPECT_EQ(asked, 110u + 4 + 4 * 2);
+  // Each shard saw every family: two or three cases of each in shard 0 (the partial round's first 10 families).
+  for (const FamilyResult& f : first_verdict.families)
+    EXPECT_EQ(f.checked, f.family < properties::Family::subnormals ? 3u : 2u) << properties::name(f.family);
 }
 
 TEST(conform, refuses_a_run_too_short_to_reach_every_family) {
@@ -309,13 +328,13 @@ TEST(conform, refuses_a_run_too_short_to_reach_every_family) {
   const Verdict short_run = check(engine_candidate, Options{{0}, 10, 3, 1, 0, 1, {}});
   EXPECT_EQ(short_run.outcome, Outcome::cannot_check);
   EXPECT_EQ(short_run.error,
-            "no case of the family mutual-contacts was checked: each round of 17 cases draws every family of the resolved "
-            "profile once, and this run checked 10; raise --cases to at least 17");
-  const Verdict sharded = check(engine_candidate, Options{{0}, 20, 3, 1, 1, 2, {}});
+            "no case of the family mutual-contacts was checked: each round of 25 cases draws every family of the resolved "
+            "profile once, and this run checked 10; raise --cases to at least 25");
+  const Verdict sharded = check(engine_candidate, Options{{0}, 28, 3, 1, 1, 2, {}});
   EXPECT_EQ(sharded.outcome, Outcome::cannot_check);
   EXPECT_EQ(sharded.error,
-            "no case of the family ulp-nudge was checked: each round of 17 cases draws every family of the resolved "
-            "profile once, and this run (shard 1/2) checked 3; raise --cases to at least 34");
+            "no case of the family ulp-nudge was checked: each round of 25 cases draws every family of the resolved "
+            "profile once, and this run (shard 1/2) checked 3; raise --cases to at least 50");
   // Replaying one case is not a run over the families; nor need --cases reach it.
   const Verdict one = check(engine_candidate, Options{{0}, 1000, 3, 1, 0, 1, 1500});
   EXPECT_EQ(one.outcome, Outcome::conforms) << describe(one);
@@ -425,7 +444,7 @@ TEST(conform, saves_a_counterexample_and_replays_it_first_on_every_run) {
   EXPECT_EQ(files_in(corpus, ".json").size(), 1u);  // not saved twice
 
   // A right step passes it, and says so.
-  FunctionCandidate right([](const Circles& w) { return spec::resolved_step_rounded(w); });
+  FunctionCandidate right([](const Circles& w) { return testing::right_step(w); });
   const Verdict third = check(right, options);
   EXPECT_EQ(third.outcome, Outcome::conforms) << describe(third);
   EXPECT_EQ(third.replayed, 1u);

@@ -34,7 +34,7 @@ using circles::testing::FunctionCandidate;
 
 // The correct step, except that circle 0's px is infinite whenever a world has two circles or more.
 Circles infinite_px(const Circles& w) {
-  Circles out = spec::resolved_step_rounded(w);
+  Circles out = testing::right_step(w);
   if (out.size() >= 2) out[0][0] = INFINITY;
   return out;
 }
@@ -48,7 +48,7 @@ Verdict verdict_of(const std::function<Circles(const Circles&)>& step, std::uint
 nlohmann::json json_of(const Verdict& v) { return nlohmann::json::parse(json_report(v, counterexample_text(v))); }
 
 TEST(report, writes_a_conforming_verdict_as_json_with_the_cases_of_each_family) {
-  const Verdict v = verdict_of(spec::resolved_step_rounded);
+  const Verdict v = verdict_of(testing::right_step);
   ASSERT_EQ(v.outcome, Outcome::conforms) << v.error;
   const nlohmann::json r = json_of(v);
   EXPECT_EQ(r["format"], "circles-conform-report/1");
@@ -110,8 +110,8 @@ TEST(report, writes_junit_xml_with_one_testcase_per_family_and_the_failure_in_it
     }
     skipped += static_cast<bool>(testcase.child("skipped"));
   }
-  EXPECT_EQ(cases, 17);
-  EXPECT_EQ(names.size(), 17u);
+  EXPECT_EQ(cases, 25);
+  EXPECT_EQ(names.size(), 25u);
   EXPECT_EQ(failures, 1);
   EXPECT_EQ(suite.attribute("tests").as_int(), cases);
   EXPECT_EQ(suite.attribute("failures").as_int(), failures);
@@ -122,10 +122,10 @@ TEST(report, writes_junit_xml_with_one_testcase_per_family_and_the_failure_in_it
 // The shards of a run merged: the cases add up to the unsharded run's, each family's too, and of two
 // counterexamples the one of the lower case index wins.
 TEST(report, merges_the_reports_of_shards_into_the_unsharded_runs_cases_and_verdict) {
-  const Verdict whole = verdict_of(spec::resolved_step_rounded);
+  const Verdict whole = verdict_of(testing::right_step);
   std::vector<std::string> shards, names;
   for (std::uint64_t i = 0; i < 4; ++i) {
-    const Verdict v = verdict_of(spec::resolved_step_rounded, 3 - i, 4);  // in any order
+    const Verdict v = verdict_of(testing::right_step, 3 - i, 4);  // in any order
     shards.push_back(json_report(v, ""));
     names.push_back("shard " + std::to_string(3 - i));
   }
@@ -149,7 +149,7 @@ TEST(report, merges_the_reports_of_shards_into_the_unsharded_runs_cases_and_verd
 }
 
 TEST(report, refuses_to_merge_reports_of_different_runs_or_a_shard_twice) {
-  const nlohmann::json one = json_of(verdict_of(spec::resolved_step_rounded, 0, 2));
+  const nlohmann::json one = json_of(verdict_of(testing::right_step, 0, 2));
   nlohmann::json other_seed = one;
   other_seed["seed"] = 10;
   other_seed["shard"] = "1/2";
@@ -169,9 +169,9 @@ TEST(report, refuses_to_merge_reports_of_different_runs_or_a_shard_twice) {
 // A report cut short or edited by hand is refused naming its file and key, exit 2, never a crash: each key merge
 // reads, of the wrong type or missing.
 TEST(report, refuses_to_merge_a_report_whose_keys_have_the_wrong_type_naming_the_file_and_key) {
-  const nlohmann::json one = json_of(verdict_of(spec::resolved_step_rounded, 0, 2));
+  const nlohmann::json one = json_of(verdict_of(testing::right_step, 0, 2));
   const auto refusal = [&](const char* key, const nlohmann::json& value) {
-    nlohmann::json other = json_of(verdict_of(spec::resolved_step_rounded, 1, 2));
+    nlohmann::json other = json_of(verdict_of(testing::right_step, 1, 2));
     if (value.is_discarded()) other.erase(key);
     else other[key] = value;
     const auto e = thrown<ReportError>([&] { merge_reports({one.dump(), other.dump()}, {"a.json", "b.json"}); });
@@ -200,7 +200,7 @@ namespace {
 // <skipped> for expected failures and skipped families, a <failure> for a failure and an unexpected pass.
 TEST(report, carries_each_familys_status_and_junit_skips_expected_failures_and_skipped_families) {
   // Wrong only on worlds of 3 circles or more, which some families never draw.
-  FunctionCandidate candidate([](const Circles& w) { return w.size() >= 3 ? infinite_px(w) : spec::resolved_step_rounded(w); },
+  FunctionCandidate candidate([](const Circles& w) { return w.size() >= 3 ? infinite_px(w) : testing::right_step(w); },
                               "the function");
   Options options{{0}, 340, 9, 1, 0, 1, {}};
   options.keep_going = true;
@@ -241,8 +241,8 @@ TEST(report, carries_each_familys_status_and_junit_skips_expected_failures_and_s
 }
 
 TEST(report, merges_each_familys_status_across_shards_the_failure_first) {
-  nlohmann::json a = json_of(verdict_of(spec::resolved_step_rounded, 0, 2));
-  nlohmann::json b = json_of(verdict_of(spec::resolved_step_rounded, 1, 2));
+  nlohmann::json a = json_of(verdict_of(testing::right_step, 0, 2));
+  nlohmann::json b = json_of(verdict_of(testing::right_step, 1, 2));
   a["family_status"]["lattice"] = "expected failure";  // failed in one shard as the file says, passed in the other
   b["family_status"]["tangency"] = "skipped";
   const nlohmann::json conforming = nlohmann::json::parse(merge_reports({a.dump(), b.dump()}, {"a", "b"}));

@@ -222,7 +222,7 @@ TEST(vectors, the_generated_cases_are_conforms_cases_of_the_seed_in_order) {
     ASSERT_LT(k, worlds.size());
     EXPECT_TRUE(same_bits(doubles(c["input"]), worlds[k])) << "case " << k;
   }
-  EXPECT_GT(generated, 150u);  // the skipped ones leave the double range
+  EXPECT_GT(generated, 110u);  // of 200: 136 of the small families, less those that leave the double range
 }
 
 TEST(vectors, a_vector_line_holds_fractions_hex_floats_features_and_hashes) {

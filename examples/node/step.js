@@ -55,16 +55,19 @@ function round(n, d, e) {
   return negative ? -value : value;
 }
 
-// (3): (ra + rb)² ≥ (bx − ax)² + (by − ay)², exactly.
+// (3): (ra + rb)² ≥ (bx − ax)² + (by − ay)², exactly, on [px, py, r] given as BigInts at one exponent.
 function touches(a, b) {
-  const [bx, ax, ex] = common(exact(b[0]), exact(a[0]));
-  const [by, ay, ey] = common(exact(b[1]), exact(a[1]));
-  const [rb, ra, er] = common(exact(b[4]), exact(a[4]));
-  const dx = bx - ax, dy = by - ay, s = ra + rb;
-  // Bring dx², dy², s² to one exponent: 2·ex, 2·ey, 2·er.
-  const e = Math.min(ex, ey, er);
-  const sq = (v, ev) => (v * v) << BigInt(2 * (ev - e));
-  return sq(s, er) >= sq(dx, ex) + sq(dy, ey);
+  const dx = b[0] - a[0], dy = b[1] - a[1], s = a[2] + b[2];
+  return s * s >= dx * dx + dy * dy;
+}
+
+// The positions and radii of w as BigInts m·2^(e − e0) at the least exponent e0 of the nonzero ones, so that
+// (3) is decided on integers as short as the world allows: each double is converted once, not once per pair.
+function scaled(w) {
+  const parts = w.map((c) => [exact(c[0]), exact(c[1]), exact(c[4])]);
+  let e0 = Infinity;
+  for (const c of parts) for (const x of c) if (x.m !== 0n) e0 = Math.min(e0, x.e);  // 0 says nothing of scale
+  return parts.map((c) => c.map((x) => (x.m === 0n ? 0n : x.m << BigInt(x.e - e0))));
 }
 
 // RN(p + v/60) = RN((60·p + v)/60).
@@ -83,10 +86,11 @@ function precedes(w, a, b) {
 }
 
 function step(w) {
+  const at = scaled(w);
   return w.map((c, k) => {
     let least = -1;
     for (let j = 0; j < w.length; ++j)
-      if (j !== k && touches(c, w[j]) && (least < 0 || precedes(w, j, least))) least = j;
+      if (j !== k && touches(at[k], at[j]) && (least < 0 || precedes(w, j, least))) least = j;
     const vx = least < 0 ? c[2] : w[least][2], vy = least < 0 ? c[3] : w[least][3];
     return [advance(c[0], vx), advance(c[1], vy), vx, vy, c[4]];
   });

@@ -1,0 +1,221 @@
+#include "tests/scale_gallery.hpp"
+
+#include "impl/predicate.hpp"
+#include "impl/rounding.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <numeric>
+#include <utility>
+
+namespace circles::testing {
+namespace {
+
+using Circle = std::array<double, 5>;
+// For each circle, the circles it tests for contact (directed: circle i finds its own contacts among looks[i]).
+using Looks = std::vector<std::vector<std::size_t>>;
+
+// Up to this many circles every pair is tested, as fast steps do below some count: every entry is exact there.
+constexpr std::size_t kAllPairsUpTo = 64;
+// Cells a little over a diameter wide: two circles that touch are at most a diameter of the largest apart, so
+// their cells are the same or adjacent even after x/h is rounded (the margin, 2^-20 of a cell, is far more than
+// the rounding of |x/h| <= 2^40).
+constexpr double kCellMargin = 1 + 0x1p-20;
+constexpr double kMaxCell = 0x1p40;
+
+Looks all_pairs(std::size_t n) {
+  Looks looks(n);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < n; ++j)
+      if (i != j) looks[i].push_back(j);
+  return looks;
+}
+
+// A uniform grid: each circle in the cell of its centre (a cell keeps its first `capacity` circles, 0: all),
+// each circle looking at the 3 × 3 cells around its own. Cells of side 2·kCellMargin·(the largest radius of the
+// first `sample` circles, 0: of all). All pairs where the grid cannot hold the centres.
+Looks grid(const Circles& w, std::size_t sample, std::size_t capacity) {
+  const std::size_t n = w.size();
+  double largest = 0;
+  for (std::size_t k = 0; k < (sample ? std::min(sample, n) : n); ++k) largest = std::max(largest, w[k][4]);
+  double h = 2 * kCellMargin * largest;
+  if (!(h > 0)) h = 1;
+  if (!std::isfinite(h)) return all_pairs(n);
+  std::vector<std::pair<std::int64_t, std::int64_t>> cell(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const double x = std::floor(w[k][0] / h), y = std::floor(w[k][1] / h);
+    if (!(std::fabs(x) <= kMaxCell && std::fabs(y) <= kMaxCell)) return all_pairs(n);
+    cell[k] = {static_cast<std::int64_t>(x), static_cast<std::int64_t>(y)};
+  }
+  std::map<std::pair<std::int64_t, std::int64_t>, std::vector<std::size_t>> cells;
+  for (std::size_t k = 0; k < n; ++k) {
+    std::vector<std::size_t>& in = cells[cell[k]];
+    if (capacity == 0 || in.size() < capacity) in.push_back(k);
+  }
+  Looks looks(n);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::int64_t dx = -1; dx <= 1; ++dx)
+      for (std::int64_t dy = -1; dy <= 1; ++dy)
+        if (const auto at = cells.find({cell[i].first + dx, cell[i].second + dy}); at != cells.end())
+          for (const std::size_t j : at->second)
+            if (j != i) looks[i].push_back(j);
+  return looks;
+}
+
+// Sort and sweep along x: the intervals [x − r, x + r], widened outward by an ulp so that they hold the exact
+// ones, sorted by their left ends (in blocks of `block` circles, 0: all at once), each compared with the ones
+// after it while they start before it ends (at most `window` ahead, 0: no limit). All pairs if an end overflows.
+Looks sweep(const Circles& w, std::size_t block, std::size_t window) {
+  const std::size_t n = w.size();
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  std::vector<double> left(n), right(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    left[k] = std::nextafter(w[k][0] - w[k][4], -inf);
+    right[k] = std::nextafter(w[k][0] + w[k][4], inf);
+    if (!std::isfinite(left[k]) || !std::isfinite(right[k])) return all_pairs(n);
+  }
+  std::vector<std::size_t> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  const std::size_t run = block ? block : n;
+  for (std::size_t from = 0; from < n; from += run) {
+    const auto first = order.begin() + static_cast<std::ptrdiff_t>(from);
+    const auto last = order.begin() + static_cast<std::ptrdiff_t>(std::min(n, from + run));
+    std::stable_sort(first, last, [&](std::size_t a, std::size_t b) { return left[a] < left[b]; });
+  }
+  Looks looks(n);
+  for (std::size_t a = 0; a < n; ++a)
+    for (std::size_t b = a + 1; b < n && (window == 0 || b - a <= window) && left[order[b]] <= right[order[a]]; ++b) {
+      looks[order[a]].push_back(order[b]);
+      looks[order[b]].push_back(order[a]);
+    }
+  return looks;
+}
+
+// Strips of equal counts along x; a circle of strip s looks at every circle whose x is within twice the largest
+// radius of strip s (the right reach is its own radius plus the largest of all).
+Looks strips(const Circles& w, std::size_t count) {
+  const std::size_t n = w.size();
+  std::vector<std::size_t> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return w[a][0] < w[b][0]; });
+  Looks looks(n);
+  for (std::size_t s = 0; s < count; ++s) {
+    const std::size_t from = n * s / count, to = n * (s + 1) / count;
+    double reach = 0;
+    for (std::size_t t = from; t < to; ++t) reach = std::max(reach, 2 * kCellMargin * w[order[t]][4]);
+    for (std::size_t t = from; t < to; ++t) {
+      const std::size_t i = order[t];
+      for (const std::size_t j : order)
+        if (j != i && std::fabs(w[j][0] - w[i][0]) <= reach) looks[i].push_back(j);
+    }
+  }
+  return looks;
+}
+
+// Whether circle a precedes circle b: lexicographic on (px, py, vx, vy, r), exactly (−0 == +0), then by index.
+bool precedes(const Circles& w, std::size_t a, std::size_t b) {
+  for (std::size_t f = 0; f < 5; ++f) {
+    if (w[a][f] < w[b][f]) return true;
+    if (w[b][f] < w[a][f]) return false;
+  }
+  return a < b;
+}
+
+// Circle i's image: the velocity of its least contact among looks (the first `slots` contacts in index order,
+// 0: all; the least kept in `bits` bits, 0: in full), then the correctly rounded move.
+Circle image(const Circles& w, std::size_t i, std::vector<std::size_t> looks, const ScaleBugs& bugs) {
+  std::sort(looks.begin(), looks.end());
+  looks.erase(std::unique(looks.begin(), looks.end()), looks.end());
+  std::vector<std::size_t> contacts;
+  for (const std::size_t j : looks)
+    if (impl::intersect_exact(w[i][0], w[i][1], w[i][4], w[j][0], w[j][1], w[j][4])) contacts.push_back(j);
+  if (bugs.contact_slots && contacts.size() > bugs.contact_slots) contacts.resize(bugs.contact_slots);
+  const std::size_t mask = bugs.index_bits ? (std::size_t{1} << bugs.index_bits) - 1 : ~std::size_t{0};
+  std::size_t least = i;
+  bool any = false;
+  for (const std::size_t j : contacts)
+    if (!any || precedes(w, j, least)) {
+      least = j & mask;
+      any = true;
+    }
+  const double vx = w[least][2], vy = w[least][3];
+  return {impl::advance_rounded(w[i][0], vx), impl::advance_rounded(w[i][1], vy), vx, vy, w[i][4]};
+}
+
+Looks candidates(const Circles& w, const ScaleBugs& bugs, ScaleState& state) {
+  if (bugs.keeps_pairs && state.circles == w.size() && !state.pairs.empty()) {
+    Looks looks(w.size());
+    for (const auto& [i, j] : state.pairs) looks[i].push_back(j);
+    return looks;
+  }
+  Looks looks = bugs.strips ? strips(w, bugs.strips)
+                : bugs.broad == ScaleBugs::Broad::sweep ? sweep(w, bugs.sort_block, bugs.sweep_window)
+                                                        : grid(w, bugs.radius_sample, bugs.cell_capacity);
+  if (bugs.simd_width)
+    for (std::size_t i = w.size() - w.size() % bugs.simd_width; i < w.size(); ++i) looks[i].clear();
+  if (bugs.keeps_pairs) {
+    state.circles = w.size();
+    state.pairs.clear();
+    for (std::size_t i = 0; i < looks.size(); ++i)
+      for (const std::size_t j : looks[i]) state.pairs.emplace_back(i, j);
+  }
+  return looks;
+}
+
+}  // namespace
+
+Circles optimized_step(const Circles& w, const ScaleBugs& bugs, ScaleState& state) {
+  const std::size_t n = w.size();
+  Circles out(n);
+  if (n <= kAllPairsUpTo) {
+    const Looks looks = all_pairs(n);
+    for (std::size_t i = 0; i < n; ++i) out[i] = image(w, i, looks[i], ScaleBugs{.contact_slots = bugs.contact_slots});
+    return out;
+  }
+  const Looks looks = candidates(w, bugs, state);
+  if (bugs.barrier_free) {
+    // Each chunk decides its contacts on the world as the chunks before it left it.
+    Circles now = w;
+    for (std::size_t c = 0; c < bugs.barrier_free; ++c) {
+      const std::size_t from = n * c / bugs.barrier_free, to = n * (c + 1) / bugs.barrier_free;
+      for (std::size_t i = from; i < to; ++i) out[i] = image(now, i, looks[i], bugs);
+      std::copy(out.begin() + static_cast<std::ptrdiff_t>(from), out.begin() + static_cast<std::ptrdiff_t>(to),
+                now.begin() + static_cast<std::ptrdiff_t>(from));
+    }
+    return out;
+  }
+  for (std::size_t i = 0; i < n; ++i) out[i] = image(w, i, looks[i], bugs);
+  return out;
+}
+
+const std::vector<ScaleEntry>& scale_gallery() {
+  using Broad = ScaleBugs::Broad;
+  static const std::vector<ScaleEntry> entries{
+      {"contact-slots", "keeps the first 8 contacts of a circle, in index order", {.contact_slots = 8}, 10},
+      {"radius-sample", "sizes its grid's cells from the radii of the first 64 circles", {.radius_sample = 64}, 65},
+      {"strip-reach", "looks as far as its own strip's largest diameter, of 4 strips along x", {.strips = 4}, 65},
+      {"barrier-free", "updates 4 chunks of the index order in place, one after another", {.barrier_free = 4}, 65},
+      {"cell-capacity", "holds at most 16 circles in a grid cell", {.cell_capacity = 16}, 65},
+      {"index-bits", "keeps the least contact's index in 8 bits", {.index_bits = 8}, 257},
+      {"block-sort", "sorts along x in blocks of 256 circles, never merged",
+       {.broad = Broad::sweep, .sort_block = 256}, 257},
+      {"sweep-window", "looks at most 32 circles ahead in x order", {.broad = Broad::sweep, .sweep_window = 32}, 65},
+      {"simd-remainder", "skips the contacts of the last circles, past the last whole block of 8",
+       {.simd_width = 8}, 65},
+      {"kept-pairs", "keeps the last request's candidate pairs when the count matches", {.keeps_pairs = true}, 65},
+  };
+  return entries;
+}
+
+const ScaleEntry* find_scale_entry(std::string_view name) {
+  static const ScaleEntry optimized{"optimized", "the correct optimized step", {}, 0};
+  if (name == optimized.name) return &optimized;
+  for (const ScaleEntry& e : scale_gallery())
+    if (e.name == name) return &e;
+  return nullptr;
+}
+
+}  // namespace circles::testing
