@@ -42,7 +42,7 @@ Output output_of(const std::string& command) {
   return out;
 }
 
-std::string quoted(const std::filesystem::path& path) { return "'" + path.string() + "'"; }
+std::string quoted(const std::filesystem::path& path) { return std::string("'").append(path.string()).append("'"); }
 
 std::vector<std::string> lines_of(const std::filesystem::path& relative) {
   std::ifstream in(root / relative);
@@ -214,7 +214,7 @@ TEST(docs, engine_md_names_only_files_and_code_that_exist) {
 // but .git and the build directories (.gitignore's build*/).
 std::vector<std::filesystem::path> repository_files() {
   std::vector<std::filesystem::path> files;
-  const Output listed = output_of("git -C " + quoted(root) + " ls-files -z 2>/dev/null");
+  const Output listed = output_of(std::string("git -C ").append(quoted(root)).append(" ls-files -z 2>/dev/null"));
   if (listed.status == 0 && !listed.text.empty()) {
     for (std::size_t at = 0; at < listed.text.size();) {
       const std::size_t end = listed.text.find('\0', at);
