@@ -205,4 +205,22 @@ TEST(docs_math, the_worked_example_of_math_md_is_what_the_oracle_computes) {
   }
 }
 
+// A learner reads each equation without a list of test names in the way: math.md names its tests in the table
+// at its end, one row an equation (and one for the rounding to doubles), and nowhere else.
+TEST(docs_math, math_md_names_its_tests_only_in_the_table_at_its_end) {
+  const std::regex test_name(R"(`[A-Za-z0-9_]+\.[a-z0-9]*_[a-z0-9_]*`)");
+  const std::vector<std::string> lines = lines_of("docs/math.md");
+  bool in_table_section = false;
+  std::size_t rows = 0;
+  for (std::size_t n = 0; n < lines.size(); ++n) {
+    if (lines[n].starts_with("## ")) in_table_section = lines[n] == "## The tests of each equation";
+    if (!std::regex_search(lines[n], test_name)) continue;
+    if (in_table_section && lines[n].starts_with("| "))
+      ++rows;
+    else
+      ADD_FAILURE() << "docs/math.md:" << n + 1 << " names a test outside the table of tests at its end";
+  }
+  EXPECT_EQ(rows, 10u) << "a row of tests for each of the nine equations, and one for the rounding";
+}
+
 }  // namespace
