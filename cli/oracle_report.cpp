@@ -1,5 +1,6 @@
 #include "cli/oracle_report.hpp"
 
+#include "cli/counted.hpp"
 #include "spec/oracle.hpp"
 
 #include <iomanip>
@@ -39,8 +40,8 @@ Summary summarize(const spec::Trajectory<E>& t) {
 }
 
 void print_summary(const Summary& s, std::size_t steps_done, std::ostream& out) {
-  out << "  " << steps_done << " steps; " << s.contacts << " contacts (pairs touching) over " << s.contact_steps
-      << " steps";
+  out << "  " << counted(steps_done, "step") << "; " << counted(s.contacts, "contact")
+      << (s.contacts == 1 ? " (a pair touching)" : " (pairs touching)") << " over " << counted(s.contact_steps, "step");
   if (s.contact_steps) out << ", the first at step " << s.first_contact;
   out << "\n";
 }
@@ -62,8 +63,8 @@ void print_circle(const std::string& label, const Circle& c, std::ostream& out) 
 void report_oracle(const std::vector<Circle>& scene, const std::string& scene_name, std::size_t steps,
                    std::ostream& out) {
   out << std::setprecision(std::numeric_limits<double>::max_digits10);
-  out << "circles: the exact oracle on " << scene_name << " (" << scene.size() << " circles, " << steps
-      << " steps of Δt = 1/60)\n"
+  out << "circles: the exact oracle on " << scene_name << " (" << counted(scene.size(), "circle") << ", "
+      << counted(steps, "step") << " of Δt = 1/60)\n"
       << "This part runs the oracle alone, in exact rationals; the main job (`circles` with no subcommand) then\n"
       << "steps each engine beside the correctly rounded oracle and compares them.\n\n";
 
@@ -80,9 +81,10 @@ void report_oracle(const std::vector<Circle>& scene, const std::string& scene_na
   const auto literal = spec::D(spec::literal_world(positive), steps);
   const Summary s = summarize(literal);
   out << "\nliteral profile (the seed to the letter: worlds are sets, the minimum is (6)/(7))\n";
-  if (positive.size() != scene.size()) out << "  " << scene.size() - positive.size() << " circles of radius 0 left out (r ∈ R+)\n";
+  if (positive.size() != scene.size())
+    out << "  " << counted(scene.size() - positive.size(), "circle") << " of radius 0 left out (r ∈ R+)\n";
   print_summary(s, literal.w.size() - 1, out);
-  out << "  " << s.merged << " circles merged by set semantics\n";
+  out << "  " << counted(s.merged, "circle") << " merged by set semantics\n";
   if (literal.undefined) {
     out << "  undefined at step " << literal.w.size() - 1 << " → " << literal.w.size()
         << ": e (8) has no least element for\n";

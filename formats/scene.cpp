@@ -21,7 +21,7 @@
 
 namespace circles::formats {
 
-extern const char* const default_scene_json;  // generated from scenes/default.json (cli/embedded.cpp.in)
+extern const char* const default_scene_json;  // generated from scenes/default.json (formats/embedded.cpp.in)
 
 namespace {
 

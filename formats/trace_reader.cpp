@@ -11,9 +11,20 @@
 #include <utility>
 
 namespace circles::formats {
+namespace {
+
+// "FILE:LINE: WHY", or "FILE: WHY" for line 0 (the file as a whole); appended, not added to a literal, for the
+// reason cmake/flags.cmake gives (GCC 12's false -Wrestrict).
+std::string located(const std::string& file, std::size_t line, const std::string& why) {
+  std::string text = file;
+  if (line) text.append(":").append(std::to_string(line));
+  return text.append(": ").append(why);
+}
+
+}  // namespace
 
 TraceReadError::TraceReadError(const std::string& file, std::size_t line_number, const std::string& why)
-    : std::runtime_error(file + (line_number ? ":" + std::to_string(line_number) : std::string()) + ": " + why),
+    : std::runtime_error(located(file, line_number, why)),
       source(file),
       line(line_number),
       reason(why) {}

@@ -208,7 +208,7 @@ std::string counterexample_svg(const CounterexamplePicture& p) {
       circle(cr, v, w[j]);
       cairo_stroke(cr);
       set(cr, kBlack);
-      text(cr, v.x(w[j][0]) + 4, v.y(w[j][1]) - 4, "#" + std::to_string(j));
+      text(cr, v.x(w[j][0]) + 4, v.y(w[j][1]) - 4, std::string("#").append(std::to_string(j)));
     }
 
   // Expected and answered positions of the circle that differs.

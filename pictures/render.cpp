@@ -35,6 +35,10 @@ Colour fill_colour(std::size_t index) {
   return kPalette[index % kPalette.size()];
 }
 
+double contact_width(double drawn_radius) {
+  return std::min(kContactWidth, kContactWidthPerRadius * drawn_radius);
+}
+
 namespace {
 
 bool finite(const std::array<double, 5>& c) {
@@ -209,9 +213,9 @@ void Frame::draw(const Circles& world, const View& view) {
   // The rings after every fill, so that no circle hides another's contact.
   const std::vector<unsigned char> touching = contacts(world);
   set_colour(cr, kContactOutline);
-  cairo_set_line_width(cr, kContactWidth);
   for (std::size_t k = 0; k < world.size(); ++k) {
     if (!touching[k] || placed[k].kind == Placed::none) continue;
+    cairo_set_line_width(cr, placed[k].kind == Placed::disc ? contact_width(placed[k].r) : kContactWidth);
     edge_path(cr, placed[k]);
     cairo_stroke(cr);
   }

@@ -9,7 +9,8 @@
 //
 // Drawing. Circle k is filled with fill_colour(k) (ten colours by index, so one sees which circle carries
 // which velocity), in index order, on kBackground; then every circle in contact with another, by (3) decided
-// exactly on the doubles shown (impl::intersect_exact), gets a kContactOutline ring 2 pixels wide. A circle
+// exactly on the doubles shown (impl::intersect_exact), gets a kContactOutline ring on its edge, 2 pixels wide
+// or a quarter of the circle's drawn radius where that is less (contact_width). A circle
 // thinner than a pixel is drawn with radius kMinRadius (half a pixel), so that none vanishes, points (r = 0)
 // included. Circles wholly outside the frame are skipped; one that covers the frame fills it; one with a
 // radius of 2^21 pixels or more is drawn as the half-plane its edge cuts the frame with (the edge is then
@@ -47,7 +48,11 @@ inline constexpr Colour kContactOutline{0xff, 0xff, 0xff};
 Colour fill_colour(std::size_t index);
 
 inline constexpr double kMinRadius = 0.5;      // pixels: the least radius drawn
-inline constexpr double kContactWidth = 2;     // pixels: the contact ring's width
+// The contact ring's width: kContactWidth pixels, or a quarter of the circle's drawn radius where that is less,
+// so that the ring of a circle of 1 or 2 pixels (a scene seen from afar, with --fit) leaves its fill in view.
+inline constexpr double kContactWidth = 2;     // pixels
+inline constexpr double kContactWidthPerRadius = 0.25;
+double contact_width(double drawn_radius);
 inline constexpr double kFitMargin = 16;       // pixels: free on each side of a box View::fit frames
 
 // The smallest box that holds circles' discs, [px − r, px + r] × [py − r, py + r], in long double (whose

@@ -5,14 +5,12 @@
 // and the repository stands alone: no file names a path outside it, and every link in its Markdown leads to a
 // file and heading inside it. These tests read the files, and run the program (CIRCLES_PROGRAM).
 #include "properties/boundaries.hpp"
+#include "tests/repository.hpp"
 
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-
 #include <algorithm>
 #include <cctype>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -24,39 +22,7 @@
 
 namespace {
 
-const std::filesystem::path root = CIRCLES_SOURCE_DIR;
-
-// What `command` (run by /bin/sh) writes on stdout, and its exit status.
-struct Output {
-  std::string text;
-  int status = -1;
-};
-Output output_of(const std::string& command) {
-  Output out;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return out;
-  char chunk[4096];
-  for (std::size_t got; (got = std::fread(chunk, 1, sizeof chunk, pipe)) > 0;) out.text.append(chunk, got);
-  const int status = pclose(pipe);
-  out.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return out;
-}
-
-std::string quoted(const std::filesystem::path& path) { return "'" + path.string() + "'"; }
-
-std::vector<std::string> lines_of(const std::filesystem::path& relative) {
-  std::ifstream in(root / relative);
-  if (!in) throw std::runtime_error("cannot read " + (root / relative).string());
-  std::vector<std::string> lines;
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
-  return lines;
-}
-
-std::string text_of(const std::filesystem::path& relative) {
-  std::string all;
-  for (const std::string& line : lines_of(relative)) all += line + '\n';
-  return all;
-}
+using namespace circles::testing;
 
 // Equation number → oracle functions, from the headings "## (N) title — `spec::f`, `spec::g`" of math.md.
 std::map<int, std::set<std::string>> equations_in_math_md() {
@@ -112,15 +78,6 @@ std::set<std::string> tests_named_in(const std::filesystem::path& doc) {
   const std::regex name(R"(`([A-Za-z0-9_]+\.[a-z0-9]*_[a-z0-9_]*)`)");
   for (std::sregex_iterator t(text.begin(), text.end(), name), end; t != end; ++t) named.insert((*t)[1]);
   return named;
-}
-
-// README.md and every docs/*.md.
-std::vector<std::filesystem::path> markdown_docs() {
-  std::vector<std::filesystem::path> docs{"README.md"};
-  for (const auto& entry : std::filesystem::directory_iterator(root / "docs"))
-    if (entry.path().extension() == ".md") docs.push_back(std::filesystem::relative(entry.path(), root));
-  std::sort(docs.begin(), docs.end());
-  return docs;
 }
 
 TEST(docs, math_md_lists_each_of_the_nine_equations) {
@@ -208,31 +165,6 @@ TEST(docs, engine_md_names_only_files_and_code_that_exist) {
   }
   EXPECT_GE(files, 5);
   EXPECT_GE(names, 10);
-}
-
-// The files the repository holds: git's list where the tree is a git checkout, else every file below the root
-// but .git and the build directories (.gitignore's build*/).
-std::vector<std::filesystem::path> repository_files() {
-  std::vector<std::filesystem::path> files;
-  const Output listed = output_of("git -C " + quoted(root) + " ls-files -z 2>/dev/null");
-  if (listed.status == 0 && !listed.text.empty()) {
-    for (std::size_t at = 0; at < listed.text.size();) {
-      const std::size_t end = listed.text.find('\0', at);
-      files.emplace_back(listed.text.substr(at, end - at));
-      at = end == std::string::npos ? listed.text.size() : end + 1;
-    }
-    return files;
-  }
-  for (auto entry = std::filesystem::recursive_directory_iterator(root);
-       entry != std::filesystem::recursive_directory_iterator(); ++entry) {
-    const std::string name = entry->path().filename().string();
-    if (entry->is_directory() && (name == ".git" || (entry.depth() == 0 && name.starts_with("build")))) {
-      entry.disable_recursion_pending();
-    } else if (entry->is_regular_file()) {
-      files.push_back(std::filesystem::relative(entry->path(), root));
-    }
-  }
-  return files;
 }
 
 // A clone has only the repository: nothing in it may cite the team's shared folder (the seed, the notes), or a path of

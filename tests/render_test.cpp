@@ -154,6 +154,35 @@ TEST(render, rings_the_circles_in_contact) {
   EXPECT_EQ(frame.pixel(852, 360), fill_colour(3));
 }
 
+// A 3 × 3 lattice of touching circles of radius 1.5 pixels, as --fit draws scenes/dense.json's radius-5 circles
+// at a scale of 0.3: each ring is a quarter of the radius wide (1.31 to 1.69 from the centre), so the pixel at
+// each centre keeps the circle's fill and most of the cluster is fill, not ring; a 2-pixel ring (0.5 to 2.5)
+// would whiten it whole.
+TEST(render, scales_the_ring_of_a_small_circle_with_its_radius_so_that_its_fill_shows) {
+  EXPECT_EQ(contact_width(1.5), 0.375);
+  EXPECT_EQ(contact_width(8), kContactWidth);
+  EXPECT_EQ(contact_width(50), kContactWidth);
+  Circles lattice;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) lattice.push_back({100.5 + 3 * i, 100.5 + 3 * j, 0, 0, 1.5});
+  Frame frame;
+  frame.draw(lattice, View::pixels());
+  for (std::size_t k = 0; k < lattice.size(); ++k)
+    EXPECT_EQ(frame.pixel(static_cast<int>(lattice[k][0]), static_cast<int>(lattice[k][1])), fill_colour(k)) << k;
+  int drawn = 0, white = 0;  // white: every channel at 0xd0 or more, which no fill colour has
+  for (int x = 95; x < 112; ++x)
+    for (int y = 95; y < 112; ++y) {
+      const Colour c = frame.pixel(x, y);
+      drawn += c != kBackground;
+      white += c.r >= 0xd0 && c.g >= 0xd0 && c.b >= 0xd0;
+    }
+  EXPECT_GE(drawn, 49);
+  EXPECT_LT(4 * white, drawn) << white << " of " << drawn << " pixels are ring";
+  Frame alone;  // the rings still show: circle 0 without its neighbours is drawn otherwise
+  alone.draw({lattice[0]}, View::pixels());
+  EXPECT_NE(alone.pixel(101, 100), frame.pixel(101, 100));
+}
+
 TEST(contacts, marks_circles_at_a_distance_of_exactly_the_sum_of_their_radii) {
   EXPECT_EQ(contacts({{0, 0, 0, 0, 1}, {2, 0, 0, 0, 1}, {10, 10, 0, 0, 1}}), (std::vector<unsigned char>{1, 1, 0}));
   EXPECT_EQ(contacts({{0, 0, 0, 0, 1}, {std::nextafter(2.0, 3.0), 0, 0, 0, 1}}), (std::vector<unsigned char>{0, 0}));

@@ -72,7 +72,7 @@ TEST(json_number, append_appends_what_write_writes) {
   for (const double x : doubles(1000)) {
     std::string out = "[";
     json_number::append(out, x);
-    ASSERT_EQ(out, "[" + plain(x));
+    ASSERT_EQ(out, std::string("[").append(plain(x)));
   }
 }
 
