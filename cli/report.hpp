@@ -14,7 +14,12 @@
 //    "counterexample": null | {"family": "ulp-nudge", "case": 3 | null (a stored file), "stored": null | "F.json",
 //        "step": 1, "steps": 1, "world": [[...]], "expected": [[...]], "received": [[...]],
 //        "difference": {"circle": 0, "field": "px", "expected": 0.5, "received": "Infinity", "decision": "..."},
-//        "shrink_path": [[[...]], ...], "replay": "--seed 3 --case 3 --level exact", "text": "the printed report"},
+//        "shrink_path": [[[...]], ...], "replay": "circles conform --exec 'python3 step.py' --seed 3 --case 3 --level
+//        exact", "text": "the printed report"},
+//    "counterexamples": [{...}, ...],   every failing family's counterexample (with --keep-going, more than one),
+//                                       in the order of the --keep-going table, each as "counterexample" is: the
+//                                       run's with the printed report as "text", the others with their difference,
+//                                       which decision and replay line
 //    "elapsed_seconds": 0.43}
 // Numbers follow formats/json_number.hpp; a received number that is not finite is the string "NaN", "Infinity"
 // or "-Infinity". A merged report's "shard" lists the shards it merged, "0,1,2,3/4".

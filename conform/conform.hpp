@@ -107,7 +107,10 @@ struct Counterexample {
   // first fewer circles (RapidCheck's shrinks), then numbers simplified one at a time.
   std::vector<Circles> shrink_path;
   std::size_t circles_before = 0;              // circles of the world drawn
-  std::string replay;                          // "--seed 3 --case 3 --level exact": the options that replay it
+  std::uint64_t tries = 0;                     // simpler worlds asked while shrinking, kept or not
+  // The command that replays it (conform/replay.hpp): "circles conform --exec 'python3 step.py' --seed 3 --case 3
+  // --level exact".
+  std::string replay;
   std::filesystem::path saved;                 // where --save stored it, if it did
   std::string not_saved;                       // why it could not be stored, if it could not
   std::uint64_t shrinks() const { return shrink_path.empty() ? 0 : shrink_path.size() - 1; }
