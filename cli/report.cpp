@@ -348,7 +348,8 @@ std::string merge_reports(const std::vector<std::string>& texts, const std::vect
   return out.dump(2) + "\n";
 }
 
-int merge_command(const std::string& out, const std::vector<std::string>& reports, std::ostream& err) {
+int merge_command(const std::string& out, const std::vector<std::string>& reports, std::ostream& said,
+                  std::ostream& err) {
   std::vector<std::string> texts;
   for (const std::string& file : reports) {
     std::ifstream in(file, std::ios::binary);
@@ -363,7 +364,15 @@ int merge_command(const std::string& out, const std::vector<std::string>& report
   try {
     const std::string merged = merge_reports(texts, reports);
     write_report(out, "report", merged);
-    const std::string verdict = nlohmann::json::parse(merged)["verdict"];
+    const nlohmann::json m = nlohmann::json::parse(merged);
+    const std::string verdict = m["verdict"];
+    said << "circles report merge: " << out << ": " << m["candidate"].get<std::string>() << " " << verdict << ": "
+         << m["cases"].get<std::uint64_t>() << (m["cases"] == 1 ? " case" : " cases") << " of seed "
+         << m["seed"].get<std::uint64_t>() << " in " << reports.size() << (reports.size() == 1 ? " report" : " reports");
+    if (m["counterexample"].is_object() && m["counterexample"].contains("replay"))
+      said << "; replay: " << m["counterexample"]["replay"].get<std::string>();
+    if (m["error"].is_string()) said << "; " << m["error"].get<std::string>();
+    said << "\n";
     return verdict == "conforms" ? 0 : verdict == "does not conform" ? 1 : 2;
   } catch (const ReportError& e) {
     err << "circles report merge: " << e.what() << "\n";

@@ -138,9 +138,9 @@ exits_2_for_a_count_beyond_2_63_or_threads_with_a_program)
   # CLI11 reads "-1" as 2^64 - 1: as --cases it would run for ever, as --case check nothing (I + 1 wraps) and
   # conform. And --threads is an engine's: a program given with --exec runs its own.
   run_conform 2 --cases -1 --engine double
-  grep -q "^--cases: Value -1 not in range 0 to 9223372036854775807$" "$dir/err" || fail "$(cat "$dir/err")"
+  grep -q "^circles conform: --cases: Value -1 not in range 0 to 9223372036854775807$" "$dir/err" || fail "$(cat "$dir/err")"
   run_conform 2 --case 18446744073709551615 --engine double
-  grep -q "^--case: Value 18446744073709551615 not in range 0 to 9223372036854775807$" "$dir/err" || fail "$(cat "$dir/err")"
+  grep -q "^circles conform: --case: Value 18446744073709551615 not in range 0 to 9223372036854775807$" "$dir/err" || fail "$(cat "$dir/err")"
   run_conform 2 --threads 2 --exec "python3 $source_dir/examples/python/step.py"
   [ "$(cat "$dir/err")" = "circles conform: --threads sets the threads of an --engine; a program given with --exec runs its own" ] ||
     fail "unexpected message: $(cat "$dir/err")"
