@@ -265,6 +265,8 @@ int main(int argc, char** argv) {
       conform_options.case_given = conform->count("--case") > 0;
       conform_options.families_given = conform->count("--families") > 0;
       conform_options.skip_families_given = conform->count("--skip-families") > 0;
+      // The progress line only on a terminal: output to a pipe, a file or CI stays free of it.
+      if (isatty(STDOUT_FILENO)) conform_options.progress = &std::cout;
       return circles::cli::conform_command(conform_options, std::cout, std::cerr);
     }
     const bool from_file = !scene_path.empty(), random = random_options.circles > 0;

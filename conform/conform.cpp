@@ -374,6 +374,7 @@ class Run {
       }
       batch.clear();
       chains.clear();
+      if (options_.progress) options_.progress(verdict_);
     };
     // --case I replays case I whatever --cases says: the replay line of a report does not repeat it.
     const std::uint64_t end = options_.only_case ? *options_.only_case + 1 : options_.cases;

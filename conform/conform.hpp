@@ -27,6 +27,7 @@
 #include <chrono>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -41,6 +42,8 @@ using properties::Difference;
 using properties::Level;
 using properties::parse_level;
 using properties::Profile;
+
+struct Verdict;
 
 struct Options {
   Level level;
@@ -63,6 +66,9 @@ struct Options {
   // Families not checked (--families, --skip-families): their cases are neither drawn nor asked, their stored
   // counterexamples not replayed, and their status is `skipped`. The other cases keep their worlds.
   std::vector<properties::Family> skip{};
+  // Called after each batch of generated cases with the verdict so far (its cases, its families' statuses), for
+  // a progress line; none by default.
+  std::function<void(const Verdict&)> progress{};
 };
 
 // "A,B,..." → those families of `profile`, for --families and --skip-families. Throws std::invalid_argument
