@@ -220,8 +220,18 @@ assert report["counterexample"]["replay"] == line, report["counterexample"]["rep
 assert [c["replay"] for c in report["counterexamples"]] == [line], report["counterexamples"]
 assert ("replay: " + line + "\n") in junit.find("testsuite/testcase/failure").text
 PY
-  # Each --keep-going row's line replays its own family's counterexample.
-  run_conform 1 --seed 3 --keep-going --families ulp-nudge,tie-p-vx,cancellation --exec "$quoted"
+  # Each --keep-going row's line replays its own family's counterexample; the row shows its world, and the
+  # reports carry each row's counterexample, with which decision differs.
+  run_conform 1 --seed 3 --keep-going --families ulp-nudge,tie-p-vx,cancellation --exec "$quoted" \
+    --report "$dir/r.json" --junit "$dir/r.xml"
+  [ "$(grep -c '^ *the world asked (w_0):$' "$dir/out")" -eq 3 ] || fail "not a world per row: $(cat "$dir/out")"
+  python3 - "$dir/r.json" "$dir/r.xml" <<'PY' || fail "the reports do not hold each row's counterexample"
+import json, sys, xml.etree.ElementTree as ET
+report, junit = json.load(open(sys.argv[1])), ET.parse(sys.argv[2]).getroot()
+assert [c["family"] for c in report["counterexamples"]] == ["ulp-nudge", "tie-p-vx", "cancellation"], report["counterexamples"]
+failures = junit.findall("testsuite/testcase/failure")
+assert len(failures) == 3 and all("which decision: " in f.text for f in failures), [f.text for f in failures]
+PY
   [ "$(grep -c '^ *replay: circles conform ' "$dir/out")" -eq 3 ] || fail "not 3 replay lines: $(cat "$dir/out")"
   grep '^ *step 1 of 1, ' "$dir/out" | sed 's/^ *//; s/; which decision: .*//' >"$dir/rows"
   sed -n 's/^ *replay: //p' "$dir/out" | while IFS= read -r line; do
