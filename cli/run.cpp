@@ -162,13 +162,16 @@ std::string threads_text(const RunOptions& options) {
 // The last multiple of `every` up to `steps`: the step of the last frame.
 std::uint64_t last_frame(std::uint64_t steps, std::uint64_t every) { return steps / every * every; }
 
-// A figure of --stats to 3 significant digits, without an exponent: "6.67", "0.000471", "1230", "0".
+// A figure of --stats to 3 significant digits: "6.67", "0.006", "2e-06", "0"; from 1000 up, a whole number
+// rounded to 3 digits ("1230") rather than "1.23e+03".
 std::string figure(double x) {
-  if (x == 0 || !std::isfinite(x)) return x == 0 ? "0" : std::to_string(x);
-  const int magnitude = static_cast<int>(std::floor(std::log10(std::fabs(x))));
-  const double unit = std::pow(10.0, magnitude - 2);
   std::ostringstream o;
-  o << std::fixed << std::setprecision(std::max(0, 2 - magnitude)) << std::round(x / unit) * unit;
+  if (std::fabs(x) >= 1000 && std::isfinite(x)) {
+    const double unit = std::pow(10.0, std::floor(std::log10(std::fabs(x))) - 2);
+    o << std::fixed << std::setprecision(0) << std::round(x / unit) * unit;
+  } else {
+    o << std::setprecision(3) << x;
+  }
   return o.str();
 }
 

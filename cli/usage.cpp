@@ -49,7 +49,7 @@ std::string usage_error(const CLI::App& app, const CLI::ParseError& error) {
   const std::vector<std::string> extras = at.remaining();
   if (!extras.empty()) {  // an ExtrasError, or a missing subcommand after a misspelt one
     const std::string& extra = extras.front();
-    const auto suggest = [](const std::string& name) { return name.empty() ? "" : ": did you mean `" + name + "`?"; };
+    const auto suggest = [](const std::string& name) { return ": did you mean `" + name + "`?"; };
     if (extra.starts_with("-")) {
       std::vector<std::string> options;
       for (const CLI::Option* o : at.get_options())
