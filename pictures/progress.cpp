@@ -55,8 +55,8 @@ std::string progress_line(unsigned pass, unsigned passes, std::uint64_t step, st
   constexpr int kBar = 20;
   const double fraction = steps == 0 ? 1.0 : static_cast<double>(std::min(step, steps)) / static_cast<double>(steps);
   const int filled = static_cast<int>(std::floor(fraction * kBar));
-  std::string line = "[" + std::string(static_cast<std::size_t>(filled), '#') +
-                     std::string(static_cast<std::size_t>(kBar - filled), '.') + "] ";
+  std::string line(1, '[');
+  line.append(static_cast<std::size_t>(filled), '#').append(static_cast<std::size_t>(kBar - filled), '.').append("] ");
   char text[96];
   std::snprintf(text, sizeof text, "%3d%%  ", static_cast<int>(std::floor(fraction * 100)));
   line.append(text).append(unit);
