@@ -7,6 +7,7 @@
 #include "conform/engines.hpp"
 #include "conform/expect.hpp"
 #include "formats/output_file.hpp"
+#include "pictures/progress.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -14,6 +15,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <tuple>
 
@@ -60,6 +62,52 @@ Verdict verdict_of(const ConformCommandOptions& given, const conform::Options& o
   }
 }
 
+// The cases a run checks: --case's one, or the cases of its shard's rounds in the families not skipped.
+std::uint64_t cases_to_check(const conform::Options& o) {
+  if (o.only_case) return 1;
+  const std::span<const properties::Family> families = properties::families(o.profile);
+  const std::uint64_t F = families.size();
+  const auto checked = [&](std::uint64_t first) {  // of the first `first` families of a round
+    std::uint64_t n = 0;
+    for (std::uint64_t f = 0; f < first; ++f)
+      n += std::find(o.skip.begin(), o.skip.end(), families[f]) == o.skip.end();
+    return n;
+  };
+  const std::uint64_t rounds = o.cases / F, rest = o.cases % F;  // whole rounds, and the cases of a last one
+  const std::uint64_t mine = rounds > o.shard ? (rounds - o.shard - 1) / o.shards + 1 : 0;
+  return mine * checked(F) + (rest > 0 && rounds % o.shards == o.shard ? checked(rest) : 0);
+}
+
+// The progress line of a run on a terminal, once it has taken 2 s: "[####......]  20%  case 200 of 1000  2
+// families failing  8.0 s left".
+class ConformProgress {
+ public:
+  ConformProgress(std::ostream* out, conform::Options& options)
+      : progress_(out, cases_to_check(options), 1, pictures::Progress::Clock::now(), {kAfter, kAfter, kAfter},
+                  [this](unsigned, std::uint64_t done, double left) { return line(done, left); }),
+        total_(cases_to_check(options)) {
+    if (out)
+      options.progress = [this](const Verdict& v) {
+        failing_ = static_cast<std::uint64_t>(std::count_if(v.families.begin(), v.families.end(), [](const auto& f) {
+          return f.status == conform::FamilyStatus::failed;
+        }));
+        progress_.update(0, v.cases, pictures::Progress::Clock::now());
+      };
+  }
+  // Erases the line, before the verdict is printed.
+  void finish() { progress_.finish(); }
+
+ private:
+  static constexpr std::chrono::milliseconds kAfter{2000};
+  std::string line(std::uint64_t done, double left) const {
+    const std::string note = failing_ == 0 ? "" : "  " + std::to_string(failing_) + (failing_ == 1 ? " family" : " families") + " failing";
+    return pictures::progress_line(0, 1, done, total_, left, "case", note);
+  }
+  pictures::Progress progress_;
+  std::uint64_t total_;
+  std::uint64_t failing_ = 0;
+};
+
 }  // namespace
 
 int conform_command(const ConformCommandOptions& given, std::ostream& out, std::ostream& err) {
@@ -98,12 +146,16 @@ int conform_command(const ConformCommandOptions& given, std::ostream& out, std::
     }
   }
   Verdict verdict;
+  ConformProgress progress(given.progress, options);
   try {
     verdict = verdict_of(given, options);
+    progress.finish();
   } catch (const conform::ConformError& e) {
+    progress.finish();
     err << "circles conform: " << e.what() << "\n";
     return 2;
   } catch (const conform::UnknownEngine& e) {  // the program's --engine refuses it while parsing
+    progress.finish();
     err << "circles conform: " << e.what() << "\n";
     return 2;
   }

@@ -44,6 +44,7 @@ struct ConformCommandOptions {
   std::string junit;              // --junit FILE.xml ("" for none)
   std::string expect;             // --expect FILE ("" for none); implies keep_going
   std::string write_expect;       // --write-expect FILE ("" for none); implies keep_going
+  std::ostream* progress = nullptr;  // where a run longer than 2 s draws its progress line (a terminal), or none
 };
 
 // The command. Prints the verdict on `out` (or, when it cannot check, its reason on `err`), then the unexpected

@@ -21,15 +21,16 @@ using formats::Circles;
 using properties::Profile;
 namespace json_number = formats::json_number;
 
-// "1 case", "0 cases", "2 cases".
-std::string counted(std::uint64_t n, const std::string& noun) {
-  return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
+// "1 case", "0 cases", "2 cases"; "1 try", "2 tries".
+std::string counted(std::uint64_t n, const std::string& noun, const std::string& plural = "") {
+  return std::to_string(n) + " " + (n == 1 ? noun : plural.empty() ? noun + "s" : plural);
 }
 
-void print_world(std::ostream& out, const std::string& title, const Circles& w) {
-  out << "  " << title << ":\n";
+// "  TITLE:", then a line "    #k [px, py, vx, vy, r]" per circle, each after `indent`.
+void print_world(std::ostream& out, const std::string& title, const Circles& w, const std::string& indent = "") {
+  out << indent << "  " << title << ":\n";
   for (std::size_t k = 0; k < w.size(); ++k) {
-    std::string line = "    #" + std::to_string(k) + " [";
+    std::string line = indent + "    #" + std::to_string(k) + " [";
     for (std::size_t f = 0; f < 5; ++f) {
       if (f) line += ", ";
       json_number::append_any(line, w[k][f]);
@@ -38,7 +39,7 @@ void print_world(std::ostream& out, const std::string& title, const Circles& w) 
   }
 }
 
-// Where it came from: "case 9 of seed 3 (family tangency), shrunk from 4 to 2 circles in 7 steps", or "stored in
+// Where it came from: "case 9 of seed 3 (family tangency), shrunk from 4 to 2 circles in 70 tries", or "stored in
 // DIR/F.json, replayed first (found as case 9 of seed 3, family tangency)".
 std::string found(const Verdict& v, const Counterexample& c) {
   if (!c.stored.empty()) {
@@ -50,7 +51,7 @@ std::string found(const Verdict& v, const Counterexample& c) {
   }
   return "case " + std::to_string(c.case_index.value_or(0)) + " of seed " + std::to_string(v.options.seed) +
          " (family " + c.family + "), shrunk from " + std::to_string(c.circles_before) + " to " +
-         std::to_string(c.shrink_path.back().size()) + " circles in " + std::to_string(c.shrinks()) + " steps";
+         counted(c.shrink_path.back().size(), "circle") + " in " + counted(c.tries, "try", "tries");
 }
 
 // One line of a counterexample: "step 1 of 1, circle 0, field px: expected 0.5 (0x1p-1), got … (hex)".
@@ -73,11 +74,15 @@ std::vector<std::string> head_lines(const Verdict& v) {
   };
 }
 
+std::string asked_title(const Counterexample& c) {
+  return c.step == 1 ? "the world asked (w_0)" : "the world asked (the candidate's own last answer)";
+}
+
 // The head lines and the three worlds.
 void print_worlds(const Verdict& v, std::ostream& out) {
   const Counterexample& c = *v.counterexample;
   for (const std::string& line : head_lines(v)) out << line << "\n";
-  print_world(out, c.step == 1 ? "the world asked (w_0)" : "the world asked (the candidate's own last answer)", c.input);
+  print_world(out, asked_title(c), c.input);
   print_world(out,
               v.options.profile == Profile::literal ? "expected (the literal oracle's step, rounded to nearest)"
                                                     : "expected (the correctly rounded oracle step)",
@@ -124,22 +129,31 @@ void print_families(std::ostream& out, std::span<const conform::FamilyResult> fa
   out << line << "\n";
 }
 
+// The first line of a run's verdict without a counterexample, or of its --keep-going table: "circles conform:
+// CANDIDATE conforms: 1000 cases (2 skipped: …), 1 step each (2 for tangent-after-step, whose boundary comes
+// only at step 2), level exact, seed 3, resolved profile".
+std::string summary_line(const Verdict& v) {
+  const conform::Options& o = v.options;
+  std::string line = "circles conform: " + v.candidate + " " + name(v.outcome) + ": " + counted(v.cases, "case");
+  if (v.skipped)
+    line += " (" + std::to_string(v.skipped) + " skipped: " + (v.skipped == 1 ? "its" : "their") +
+            " next world leaves the double range)";
+  line += ", " + counted(o.steps, "step") + " each";
+  std::string longer;  // "2 for tangent-after-step, whose boundary comes only at step 2": the families chained further
+  for (const conform::FamilyResult& f : v.families)
+    if (const std::uint64_t n = properties::steps_to_decide(f.family); f.checked > 0 && n > o.steps)
+      longer += (longer.empty() ? "" : "; ") + std::to_string(n) + " for " + properties::name(f.family) +
+                ", whose boundary comes only at step " + std::to_string(n);
+  if (!longer.empty()) line += " (" + longer + ")";
+  line += ", level " + o.level.text() + ", seed " + std::to_string(o.seed) + ", " + properties::name(o.profile) +
+          " profile";
+  if (o.shards > 1) line += ", shard " + std::to_string(o.shard) + "/" + std::to_string(o.shards);
+  return line;
+}
+
 void print_conforms(const Verdict& v, std::ostream& out) {
   const conform::Options& o = v.options;
-  out << "circles conform: " << v.candidate << " conforms: " << counted(v.cases, "case");
-  if (v.skipped)
-    out << " (" << v.skipped << " skipped: " << (v.skipped == 1 ? "its" : "their")
-        << " next world leaves the double range)";
-  out << ", " << counted(o.steps, "step") << " each";
-  std::string longer;  // "tangent-after-step 2": the families chained further, to the step that decides them
-  for (const conform::FamilyResult& f : v.families)
-    if (f.checked > 0 && properties::steps_to_decide(f.family) > o.steps)
-      longer += (longer.empty() ? "" : ", ") + std::string(properties::name(f.family)) + " " +
-                std::to_string(properties::steps_to_decide(f.family));
-  if (!longer.empty()) out << " (" << longer << ": chained to the step that decides its boundary)";
-  out << ", level " << o.level.text() << ", seed " << o.seed << ", " << properties::name(o.profile) << " profile";
-  if (o.shards > 1) out << ", shard " << o.shard << "/" << o.shards;
-  out << "\n";
+  out << summary_line(v) << "\n";
   if (v.cases > 0) print_families(out, v.families);
   if (v.cut_short)
     out << "  " << counted(v.cut_short, "chain") << " ended early: " << (v.cut_short == 1 ? "its" : "their")
@@ -157,14 +171,27 @@ void print_conforms(const Verdict& v, std::ostream& out) {
   }
 }
 
+// "1st", "2nd", "3rd", "4th", "11th", "21st".
+std::string ordinal(std::uint64_t n) {
+  const std::uint64_t last = n % 10;
+  const char* suffix = n % 100 / 10 == 1 ? "th" : last == 1 ? "st" : last == 2 ? "nd" : last == 3 ? "rd" : "th";
+  return std::to_string(n) + suffix;
+}
+
+// A family's status in the --keep-going table; for one with a counterexample, where it failed: "failed at its
+// 3rd case; none asked after" (its count of cases is those up to its failure), or "failed on a stored
+// counterexample; no case asked".
+std::string status_cell(const conform::FamilyResult& f) {
+  const std::string status = name(f.status);
+  if (!f.counterexample) return status;
+  if (!f.counterexample->stored.empty()) return status + " on a stored counterexample; no case asked";
+  return status + " at its " + ordinal(f.checked) + " case; none asked after";
+}
+
 // --keep-going: a row per family, its cases checked, its status and, for a family that failed, its shrunk
-// counterexample in one line (the field, expected, got, which decision) and its replay line.
+// counterexample: a line (the field, expected, got, which decision), the world asked, and its replay line.
 void print_table(const Verdict& v, std::ostream& out) {
-  const conform::Options& o = v.options;
-  out << "circles conform: " << v.candidate << " " << name(v.outcome) << ": " << counted(v.cases, "case") << ", level "
-      << o.level.text() << ", seed " << o.seed << ", " << properties::name(o.profile) << " profile";
-  if (o.shards > 1) out << ", shard " << o.shard << "/" << o.shards;
-  out << "\n";
+  out << summary_line(v) << "\n";
   std::size_t width = 6;
   for (const conform::FamilyResult& f : v.families) width = std::max(width, std::string(properties::name(f.family)).size());
   const auto pad = [](std::string text, std::size_t n) { return text + std::string(n > text.size() ? n - text.size() : 0, ' '); };
@@ -173,12 +200,13 @@ void print_table(const Verdict& v, std::ostream& out) {
   for (const conform::FamilyResult& f : v.families) {
     ++counts[name(f.status)];
     out << "  " << pad(properties::name(f.family), width) << "  " << pad(std::to_string(f.checked), 6) << "  "
-        << name(f.status) << "\n";
+        << status_cell(f) << "\n";
     if (!f.counterexample) continue;
     const Counterexample& c = *f.counterexample;
     const std::string indent(width + 12, ' ');
-    out << indent << difference_line(c) << "; which decision: " << c.difference.decision << "\n"
-        << indent << "replay: " << c.replay << "\n";
+    out << indent << difference_line(c) << "; which decision: " << c.difference.decision << "\n";
+    print_world(out, asked_title(c), c.input, indent.substr(2));
+    out << indent << "replay: " << c.replay << "\n";
     if (!c.saved.empty()) out << indent << "saved: " << c.saved.string() << "\n";
   }
   std::string summary;

@@ -5,7 +5,9 @@
 #include "cli/oracle_report.hpp"
 #include "cli/report.hpp"
 #include "cli/run.hpp"
+#include "cli/usage.hpp"
 #include "cli/vectors.hpp"
+#include "cli/version.hpp"
 #include "conform/check_trace.hpp"
 #include "conform/engines.hpp"
 #include "conform/serve.hpp"
@@ -76,8 +78,11 @@ int main(int argc, char** argv) {
   // A write beyond the file size limit (ulimit -f) fails with EFBIG instead of killing the program, so that
   // it ends like a full disk: a message naming the file, and no half-written output left.
   std::signal(SIGXFSZ, SIG_IGN);
-  CLI::App app{"circles: a conformance suite for the circles physics spec"};
+  CLI::App app{"circles: a conformance suite for the circles physics spec.\nWith no command, plain `circles` runs the "
+               "main job on the embedded default scene: the exact oracle's report (as `circles oracle`), then every "
+               "engine checked against the oracle step by step; exit 0 when all agree"};
   app.require_subcommand(0, 1);
+  app.set_version_flag("--version", "circles " CIRCLES_VERSION);
 
   std::string scene_path;
   std::size_t steps = 100;
@@ -89,8 +94,9 @@ int main(int argc, char** argv) {
   // loader, as every other bad scene is (docs/scenes.md).
   CLI::Option* oracle_scene =
       oracle->add_option("scene", scene_path, "Scene file (docs/scenes.md; default: the embedded default scene)");
-  oracle->add_option("--steps", steps, "Number of steps (default: the scene's \"steps\", else 100)")
-      ->capture_default_str()
+  CLI::Option* oracle_steps =
+      oracle->add_option("--steps", steps, "Number of steps (default: the scene's \"steps\", else 100)")
+          ->capture_default_str()
       ->check(CLI::Range(std::size_t{0}, kMaxOracleSteps));
   add_random_options(oracle, oracle_scene, random_options);
 
@@ -107,8 +113,9 @@ int main(int argc, char** argv) {
   CLI::Option* run_scene =
       run->add_option("scene", scene_path, "Scene file (docs/scenes.md; default: the embedded default scene)");
   // Up to 2^63 - 1: CLI11 reads "-5" as 2^64 - 5 (strtoull), which this range refuses.
-  run->add_option("--steps", run_steps, "Number of steps (default: the scene's \"steps\", else 100)")
-      ->capture_default_str()
+  CLI::Option* run_steps_option =
+      run->add_option("--steps", run_steps, "Number of steps (default: the scene's \"steps\", else 100)")
+          ->capture_default_str()
       ->check(CLI::Range(std::uint64_t{0}, kMaxSceneSteps));
   add_random_options(run, run_scene, random_options);
   add_engine_options(run, engine_name, threads);
@@ -230,9 +237,23 @@ int main(int argc, char** argv) {
 
   try {
     app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    // `circles run SCENE --help`: the default of --steps shown is that scene's "steps", when it has one.
+    if (!scene_path.empty()) try {
+        if (const std::optional<std::uint64_t> scene_steps = load_scene_world(scene_path).steps)
+          for (CLI::Option* o : {oracle_steps, run_steps_option}) o->default_str(std::to_string(*scene_steps));
+      } catch (const SceneError&) {
+        // The help shows 100; the command run without --help names what is wrong with the scene.
+      }
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    // --help and --version exit 0; every usage error exits 2, like every other bad input.
-    return app.exit(e) == 0 ? 0 : 2;
+    // Every usage error exits 2, like every other bad input.
+    std::cerr << usage_error(app, e) << "\n";
+    return 2;
   }
 
   try {
@@ -241,7 +262,7 @@ int main(int argc, char** argv) {
       return circles::conform::serve(engine(engine_name), threads, std::cin, std::cout, std::cerr);
     }
     if (*vectors) return circles::cli::vectors_command(vectors_options, std::cout, std::cerr);
-    if (*merge) return circles::cli::merge_command(merged_file, shard_files, std::cerr);
+    if (*merge) return circles::cli::merge_command(merged_file, shard_files, std::cout, std::cerr);
     if (*check_trace)
       return check_trace_command(trace_file, trace_reference(trace_engine), std::cout, std::cerr);
     if (*conform) {
@@ -250,6 +271,8 @@ int main(int argc, char** argv) {
       conform_options.case_given = conform->count("--case") > 0;
       conform_options.families_given = conform->count("--families") > 0;
       conform_options.skip_families_given = conform->count("--skip-families") > 0;
+      // The progress line only on a terminal: output to a pipe, a file or CI stays free of it.
+      if (isatty(STDOUT_FILENO)) conform_options.progress = &std::cout;
       return circles::cli::conform_command(conform_options, std::cout, std::cerr);
     }
     const bool from_file = !scene_path.empty(), random = random_options.circles > 0;

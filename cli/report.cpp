@@ -66,6 +66,33 @@ std::string counterexample_json(const Counterexample& c, const std::string& text
   return out;
 }
 
+// "step 1 of 1, circle 0, field px: expected 0.5 (0x1p-1), got 0.25 (0x1p-2)": the JUnit failure's message.
+std::string difference_message(const Counterexample& c) {
+  const properties::Difference& d = c.difference;
+  return "step " + std::to_string(c.step) + " of " + std::to_string(c.steps) + ", circle " + std::to_string(d.circle) +
+         ", field " + properties::field_name(d.field) + ": expected " + json_number::decimal_and_hex(d.expected) +
+         ", got " + json_number::decimal_and_hex(d.actual);
+}
+
+// The text of a counterexample other than the run's (which is printed whole): its difference, which decision
+// differs, and its replay line.
+std::string short_text(const Counterexample& c) {
+  return difference_message(c) + "\nwhich decision: " + c.difference.decision + "\nreplay: " + c.replay + "\n";
+}
+
+// Every counterexample of the verdict, each with its text, in the order of the --keep-going table: a stored one
+// of no family of the profile first, then each family's that has one, in the profile's order. The run's
+// counterexample has `text`, the others short_text.
+std::vector<std::pair<const Counterexample*, std::string>> every_counterexample(const Verdict& v, const std::string& text) {
+  std::vector<std::pair<const Counterexample*, std::string>> all;
+  if (v.counterexample && v.counterexample->family.empty()) all.emplace_back(&*v.counterexample, text);
+  for (const FamilyResult& f : v.families) {
+    if (f.has_counterexample && v.counterexample) all.emplace_back(&*v.counterexample, text);
+    else if (f.counterexample) all.emplace_back(&*f.counterexample, short_text(*f.counterexample));
+  }
+  return all;
+}
+
 // XML text: the five special characters escaped, and the bytes XML 1.0 cannot hold (control characters but
 // tab, newline and carriage return) as U+FFFD. Other bytes pass as they are (UTF-8 in, UTF-8 out).
 std::string xml(const std::string& s) {
@@ -150,9 +177,12 @@ std::string json_report(const Verdict& v, const std::string& text) {
     out += (f ? ", " : "") + family + ": " + std::to_string(v.families[f].checked);
     status += (f ? ", " : "") + family + ": " + json_string(name(v.families[f].status));
   }
+  std::string all = "[";
+  for (const auto& [c, its_text] : every_counterexample(v, text))
+    all += (all.size() > 1 ? ",\n  " : "") + counterexample_json(*c, its_text);
   out += "},\n  \"family_status\": " + status + "},\n  \"counterexample\": " +
-         (v.counterexample ? counterexample_json(*v.counterexample, text) : "null") +
-         ",\n  \"elapsed_seconds\": " + seconds(v.elapsed.count()) + "\n}\n";
+         (v.counterexample ? counterexample_json(*v.counterexample, text) : "null") + ",\n  \"counterexamples\": " + all +
+         "],\n  \"elapsed_seconds\": " + seconds(v.elapsed.count()) + "\n}\n";
   return out;
 }
 
@@ -166,15 +196,10 @@ std::string junit_report(const Verdict& v, const std::string& text) {
     const Counterexample* c = f.has_counterexample && v.counterexample ? &*v.counterexample
                               : f.counterexample                       ? &*f.counterexample
                                                                        : nullptr;
-    const auto message = [](const Counterexample& x) {
-      const properties::Difference& d = x.difference;
-      return "step " + std::to_string(x.step) + " of " + std::to_string(x.steps) + ", circle " +
-             std::to_string(d.circle) + ", field " + properties::field_name(d.field) + ": expected " +
-             json_number::decimal_and_hex(d.expected) + ", got " + json_number::decimal_and_hex(d.actual);
-    };
+    const auto message = difference_message;
     if (f.status == FamilyStatus::failed && c) {
       ++failures;
-      const std::string body = f.has_counterexample ? text : message(*c) + "\nreplay: " + c->replay + "\n";
+      const std::string body = f.has_counterexample ? text : short_text(*c);
       cases += "      <failure type=\"does not conform\" message=\"" + xml(message(*c)) + "\">" + xml(body) + "</failure>\n";
     } else if (f.status == FamilyStatus::unexpected_pass) {
       ++failures;
@@ -257,6 +282,7 @@ std::string merge_reports(const std::vector<std::string>& texts, const std::vect
   double elapsed = 0;
   std::vector<std::pair<std::string, std::uint64_t>> families;  // in the first report's order
   std::map<std::string, std::string> status;
+  std::map<std::string, nlohmann::json> of_family;  // the counterexample of the lowest case of each family
   const auto rank = [](const nlohmann::json& c) {  // a stored counterexample (no case) was replayed first
     return c["case"].is_null() ? -1.0 : c["case"].get<double>();
   };
@@ -269,6 +295,10 @@ std::string merge_reports(const std::vector<std::string>& texts, const std::vect
     if (r["verdict"] == "cannot check" && error.is_null()) error = r["error"];
     if (!r["counterexample"].is_null() && (counterexample.is_null() || rank(r["counterexample"]) < rank(counterexample)))
       counterexample = r["counterexample"];
+    for (const nlohmann::json& c : r.value("counterexamples", nlohmann::json::array())) {
+      nlohmann::json& kept = of_family[c.value("family", "")];
+      if (kept.is_null() || rank(c) < rank(kept)) kept = c;
+    }
     for (const auto& [family, count] : r["families"].items()) {
       // [&name = family]: Clang 14 cannot capture a structured binding (the sanitizer and fuzz build is Clang's).
       const auto named = [&name = family](const auto& p) { return p.first == name; };
@@ -309,11 +339,17 @@ std::string merge_reports(const std::vector<std::string>& texts, const std::vect
   out["families"] = by_family;
   out["family_status"] = by_status;
   out["counterexample"] = counterexample;
+  nlohmann::json all = nlohmann::json::array();
+  if (of_family.contains("")) all.push_back(of_family[""]);
+  for (const auto& [family, count] : families)
+    if (of_family.contains(family)) all.push_back(of_family[family]);
+  out["counterexamples"] = all;
   out["elapsed_seconds"] = elapsed;
   return out.dump(2) + "\n";
 }
 
-int merge_command(const std::string& out, const std::vector<std::string>& reports, std::ostream& err) {
+int merge_command(const std::string& out, const std::vector<std::string>& reports, std::ostream& said,
+                  std::ostream& err) {
   std::vector<std::string> texts;
   for (const std::string& file : reports) {
     std::ifstream in(file, std::ios::binary);
@@ -328,7 +364,15 @@ int merge_command(const std::string& out, const std::vector<std::string>& report
   try {
     const std::string merged = merge_reports(texts, reports);
     write_report(out, "report", merged);
-    const std::string verdict = nlohmann::json::parse(merged)["verdict"];
+    const nlohmann::json m = nlohmann::json::parse(merged);
+    const std::string verdict = m["verdict"];
+    said << "circles report merge: " << out << ": " << m["candidate"].get<std::string>() << " " << verdict << ": "
+         << m["cases"].get<std::uint64_t>() << (m["cases"] == 1 ? " case" : " cases") << " of seed "
+         << m["seed"].get<std::uint64_t>() << " in " << reports.size() << (reports.size() == 1 ? " report" : " reports");
+    if (m["counterexample"].is_object() && m["counterexample"].contains("replay"))
+      said << "; replay: " << m["counterexample"]["replay"].get<std::string>();
+    if (m["error"].is_string()) said << "; " << m["error"].get<std::string>();
+    said << "\n";
     return verdict == "conforms" ? 0 : verdict == "does not conform" ? 1 : 2;
   } catch (const ReportError& e) {
     err << "circles report merge: " << e.what() << "\n";

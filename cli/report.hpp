@@ -14,7 +14,12 @@
 //    "counterexample": null | {"family": "ulp-nudge", "case": 3 | null (a stored file), "stored": null | "F.json",
 //        "step": 1, "steps": 1, "world": [[...]], "expected": [[...]], "received": [[...]],
 //        "difference": {"circle": 0, "field": "px", "expected": 0.5, "received": "Infinity", "decision": "..."},
-//        "shrink_path": [[[...]], ...], "replay": "--seed 3 --case 3 --level exact", "text": "the printed report"},
+//        "shrink_path": [[[...]], ...], "replay": "circles conform --exec 'python3 step.py' --seed 3 --case 3 --level
+//        exact", "text": "the printed report"},
+//    "counterexamples": [{...}, ...],   every failing family's counterexample (with --keep-going, more than one),
+//                                       in the order of the --keep-going table, each as "counterexample" is: the
+//                                       run's with the printed report as "text", the others with their difference,
+//                                       which decision and replay line
 //    "elapsed_seconds": 0.43}
 // Numbers follow formats/json_number.hpp; a received number that is not finite is the string "NaN", "Infinity"
 // or "-Infinity". A merged report's "shard" lists the shards it merged, "0,1,2,3/4".
@@ -58,10 +63,13 @@ std::string junit_report(const conform::Verdict& verdict, const std::string& tex
 // it has in any shard. Throws ReportError. `names` name the texts in messages.
 std::string merge_reports(const std::vector<std::string>& texts, const std::vector<std::string>& names);
 
-// `circles report merge OUT IN...`: merges the reports IN into OUT. Returns the exit status of the merged
-// verdict (0 conforms, 1 does not conform, 2 cannot check), or 2 with the reason on `err` for a report that
-// cannot be read or merged, or an OUT that cannot be written (left as it was).
-int merge_command(const std::string& out, const std::vector<std::string>& reports, std::ostream& err);
+// `circles report merge OUT IN...`: merges the reports IN into OUT and says the merged verdict in one line on
+// `said`: "circles report merge: OUT: CANDIDATE conforms: 1700 cases of seed 5 in 4 reports" (with the
+// counterexample's replay line, or the reason it cannot check). Returns the exit status of the merged verdict (0
+// conforms, 1 does not conform, 2 cannot check), or 2 with the reason on `err` for a report that cannot be read
+// or merged, or an OUT that cannot be written (left as it was).
+int merge_command(const std::string& out, const std::vector<std::string>& reports, std::ostream& said,
+                  std::ostream& err);
 
 // Writes `text` to `path` whole or not at all. Throws formats::OutputError.
 void write_report(const std::string& path, const std::string& what, const std::string& text);

@@ -11,6 +11,7 @@
 #include "pictures/video.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <iomanip>
 #include <optional>
 #include <sstream>
@@ -161,6 +162,19 @@ std::string threads_text(const RunOptions& options) {
 // The last multiple of `every` up to `steps`: the step of the last frame.
 std::uint64_t last_frame(std::uint64_t steps, std::uint64_t every) { return steps / every * every; }
 
+// A figure of --stats to 3 significant digits: "6.67", "0.006", "2e-06", "0"; from 1000 up, a whole number
+// rounded to 3 digits ("1230") rather than "1.23e+03".
+std::string figure(double x) {
+  std::ostringstream o;
+  if (std::fabs(x) >= 1000 && std::isfinite(x)) {
+    const double unit = std::pow(10.0, std::floor(std::log10(std::fabs(x))) - 2);
+    o << std::fixed << std::setprecision(0) << std::round(x / unit) * unit;
+  } else {
+    o << std::setprecision(3) << x;
+  }
+  return o.str();
+}
+
 }  // namespace
 
 void print_summary(const RunResult& result, std::size_t circles, const RunOptions& options, std::ostream& out) {
@@ -188,16 +202,15 @@ void print_summary(const RunResult& result, std::size_t circles, const RunOption
 void print_work(const impl::EngineStats& work, std::size_t circles, std::ostream& out) {
   // Each figure with its share, so what the engine skipped reads at a glance.
   const auto share = [](std::uint64_t part, double whole) {
-    std::ostringstream o;
-    if (whole > 0) o << " (" << std::setprecision(3) << 100.0 * static_cast<double>(part) / whole << "%)";
-    return o.str();
+    return whole > 0 ? " (" + figure(100.0 * static_cast<double>(part) / whole) + "%)" : std::string();
   };
   const auto steps = static_cast<double>(work.steps);
   const double circle_steps = steps * static_cast<double>(circles);
-  out << "pair lists built: " << work.rebuilds << " (keys, re-sort and broad phase; one per "
-      << (work.rebuilds > 0 ? steps / static_cast<double>(work.rebuilds) : 0.0) << " steps)\n";
-  out << "pairs tested: " << work.pairs_tested << " ("
-      << (circle_steps > 0 ? static_cast<double>(work.pairs_tested) / circle_steps : 0.0) << " per circle-step)\n";
+  out << "pair lists built: " << work.rebuilds << " (keys, re-sort and broad phase";
+  if (work.rebuilds > 0) out << "; one per " << figure(steps / static_cast<double>(work.rebuilds)) << " steps";
+  out << ")\npairs tested: " << work.pairs_tested;
+  if (circle_steps > 0) out << " (" << figure(static_cast<double>(work.pairs_tested) / circle_steps) << " per circle-step)";
+  out << "\n";
   out << "pairs in contact: " << work.contacts << share(work.contacts, static_cast<double>(work.pairs_tested)) << "\n";
   out << "steps with no pair to test: " << work.quiet_steps << share(work.quiet_steps, steps) << "\n";
   out << "circle-steps with no contact test: " << work.lonely_circle_steps
@@ -215,17 +228,17 @@ void print_stats(const RunResult& result, std::size_t circles, const RunOptions&
     out << std::clamp(std::thread::hardware_concurrency(), 1u, max_threads()) << " (all cores)\n";
   else
     out << options.threads << "\n";
-  out << "stepping: " << result.stepping.count() << " s\n";
+  out << "stepping: " << figure(result.stepping.count()) << " s\n";
   const double circle_steps = static_cast<double>(result.steps) * static_cast<double>(circles);
-  if (circle_steps > 0) out << "ns per circle-step: " << result.stepping.count() * 1e9 / circle_steps << "\n";
+  if (circle_steps > 0) out << "ns per circle-step: " << figure(result.stepping.count() * 1e9 / circle_steps) << "\n";
   if (result.work) print_work(*result.work, circles, out);
   const bool pictures = !options.render.empty() || !options.video.empty();
-  if (pictures && options.fit) out << "fit pass: " << result.fitting.count() << " s\n";
+  if (pictures && options.fit) out << "fit pass: " << figure(result.fitting.count()) << " s\n";
   if (pictures) {
     out << "frames: " << result.frames << "\n";
     const auto per_frame = [&](const char* name, RunResult::Seconds t) {
-      out << name << ": " << t.count() << " s";
-      if (result.frames > 0) out << " (" << t.count() * 1e3 / static_cast<double>(result.frames) << " ms per frame)";
+      out << name << ": " << figure(t.count()) << " s";
+      if (result.frames > 0) out << " (" << figure(t.count() * 1e3 / static_cast<double>(result.frames)) << " ms per frame)";
       out << "\n";
     };
     per_frame("drawing", result.drawing);
@@ -233,12 +246,12 @@ void print_stats(const RunResult& result, std::size_t circles, const RunOptions&
     if (!options.video.empty()) per_frame("video", result.video);
   }
   if (!options.trace.empty()) {
-    out << "trace: " << result.tracing.count() << " s (" << result.trace_bytes << " bytes";
+    out << "trace: " << figure(result.tracing.count()) << " s (" << result.trace_bytes << " bytes";
     if (result.tracing.count() > 0)
-      out << ", " << static_cast<double>(result.trace_bytes) / 1e6 / result.tracing.count() << " MB/s";
+      out << ", " << figure(static_cast<double>(result.trace_bytes) / 1e6 / result.tracing.count()) << " MB/s";
     out << ")\n";
   }
-  out << "total: " << result.total.count() << " s\n";
+  out << "total: " << figure(result.total.count()) << " s\n";
 }
 
 Comparison compare_with_oracle(const EngineEntry& engine, const Circles& world, std::uint64_t steps, unsigned threads) {

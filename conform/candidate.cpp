@@ -1,5 +1,6 @@
 #include "conform/candidate.hpp"
 
+#include "conform/replay.hpp"
 #include "formats/json_number.hpp"
 
 #include <algorithm>
@@ -30,6 +31,8 @@ Circles EngineCandidate::answer(const Circles& world, std::uint64_t id) {
 }
 
 std::string EngineCandidate::name() const { return "the " + std::string(engine_.name) + " engine"; }
+std::string EngineCandidate::option() const { return "--engine " + std::string(engine_.name); }
+std::string ProcessCandidate::option() const { return "--exec " + shell_quoted(command_); }
 
 namespace {
 

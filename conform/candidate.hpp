@@ -67,6 +67,10 @@ class Candidate {
   virtual void finish() {}
   // "the double engine", "the program `python3 step.py`": for messages.
   virtual std::string name() const = 0;
+  // The option of `circles conform` that selects this candidate, quoted for sh: "--engine double", "--exec
+  // 'python3 step.py'"; "" for one that no command line selects (a function in a test). Replay lines start
+  // with it (conform/replay.hpp).
+  virtual std::string option() const { return ""; }
 };
 
 class EngineCandidate : public Candidate {
@@ -75,6 +79,7 @@ class EngineCandidate : public Candidate {
   // A position beyond the double range is an answer the protocol cannot carry: BrokenCandidate.
   Circles answer(const Circles& world, std::uint64_t id) override;
   std::string name() const override;
+  std::string option() const override;
 
  private:
   const EngineEntry& engine_;
@@ -99,6 +104,7 @@ class ProcessCandidate : public Candidate {
   // Closes the program's stdin and waits, up to the deadline, for it to exit 0.
   void finish() override;
   std::string name() const override { return "the program `" + command_ + "`"; }
+  std::string option() const override;
   // How many times the program was started afresh after a fault.
   std::uint64_t restarts() const { return restarts_; }
 

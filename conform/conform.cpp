@@ -1,6 +1,7 @@
 #include "conform/conform.hpp"
 
 #include "conform/corpus.hpp"
+#include "conform/replay.hpp"
 #include "formats/json_number.hpp"
 #include "properties/boundaries.hpp"
 #include "properties/chain.hpp"
@@ -276,13 +277,6 @@ class Run {
   }
 
  private:
-  std::string replay_options() const {
-    return " --level " + options_.level.text() + (options_.steps > 1 ? " --steps " + std::to_string(options_.steps) : "") +
-           (options_.profile == Profile::literal ? " --profile literal" : "") +
-           (options_.max_circles != properties::kDefaultMaxCircles ? " --max-circles " + std::to_string(options_.max_circles)
-                                                                   : std::string());
-  }
-
   bool skipped(properties::Family family) const {
     return std::find(options_.skip.begin(), options_.skip.end(), family) != options_.skip.end();
   }
@@ -339,7 +333,7 @@ class Run {
       c.found_case = stored.case_index;
       c.circles_before = stored.world.size();
       c.shrink_path = {stored.world};
-      c.replay = "--save " + options_.save.string() + replay_options() + " (the corpus is replayed first)";
+      c.replay = replay_command(candidate_.option(), options_, std::nullopt);
       fail(std::move(*failure), std::move(c), result);
       if (!options_.keep_going) return;
     }
@@ -366,12 +360,14 @@ class Run {
     std::vector<Chain> chains;
     std::vector<Failing> failing;  // the first failing case of each family that fails, in case order
     // Checks the batch, counting its cases up to the first that fails, or with --keep-going all of them: a case
-    // of a family that failed earlier in the batch is asked and counted, but not shrunk.
+    // of a family that failed earlier in the batch is asked, but neither counted nor shrunk, so that a failing
+    // family's count is its cases up to its first failure.
     const auto check_batch = [&]() {
       for (std::size_t from = 0; from < chains.size();) {
         const std::size_t failed = from + checker_.run_all(std::span(chains).subspan(from));
         for (std::size_t k = from; k < chains.size() && k <= failed; ++k) {
           FamilyResult& family = verdict_.families[batch[k].family];
+          if (family.status == FamilyStatus::failed) continue;
           ++verdict_.cases;
           ++family.drawn;
           if (chains[k].ending() == Ending::no_reference_at_w0) ++verdict_.skipped;
@@ -389,6 +385,7 @@ class Run {
       }
       batch.clear();
       chains.clear();
+      if (options_.progress) options_.progress(verdict_);
     };
     // --case I replays case I whatever --cases says: the replay line of a report does not repeat it.
     const std::uint64_t end = options_.only_case ? *options_.only_case + 1 : options_.cases;
@@ -430,6 +427,7 @@ class Run {
       auto candidates = world.shrinks();
       while (auto next = candidates.next()) {
         if (++queries > kMaxShrinkQueries) break;
+        ++counterexample.tries;
         std::optional<Failure> f = still_fails(next->value(), steps, failure);
         if (f) {
           world = *next;
@@ -443,7 +441,7 @@ class Run {
     if (options_.simplify) simplify(world.value(), steps, failure, counterexample);
     counterexample.family = properties::name(families[family]);
     counterexample.case_index = c;
-    counterexample.replay = "--seed " + std::to_string(options_.seed) + " --case " + std::to_string(c) + replay_options();
+    counterexample.replay = replay_command(candidate_.option(), options_, c);
     if (!options_.save.empty()) {
       const StoredCounterexample stored{options_.profile, failure.input, options_.level.text(), counterexample.family,
                                         candidate_.name(), options_.seed, c, steps, failure.step, failure.expected,
@@ -488,6 +486,7 @@ class Run {
         Circles rest(world.begin(), world.begin() + static_cast<std::ptrdiff_t>(from));
         rest.insert(rest.end(), world.begin() + static_cast<std::ptrdiff_t>(to), world.end());
         ++queries;
+        ++counterexample.tries;
         if (auto f = still_fails(rest, steps, failure)) {
           world = std::move(rest);
           failure = std::move(*f);
@@ -513,6 +512,7 @@ class Run {
         for (std::size_t f = 0; f < 5; ++f)
           for (const double y : simpler_values(world[k][f])) {
             if (++queries > kMaxSimplifyQueries) return;
+            ++counterexample.tries;
             Circles simpler = world;
             simpler[k][f] = y;
             // The same failure, made simpler: at the same step, in the same field (a stateful candidate may

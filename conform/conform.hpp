@@ -27,6 +27,7 @@
 #include <chrono>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -41,6 +42,8 @@ using properties::Difference;
 using properties::Level;
 using properties::parse_level;
 using properties::Profile;
+
+struct Verdict;
 
 struct Options {
   Level level;
@@ -66,6 +69,9 @@ struct Options {
   // The most circles of a big family's world (--max-circles; properties::gen::big_world): the default crosses
   // every power of two up to 4096; a fast program can be taken to 10^5 or 10^6 circles.
   std::size_t max_circles = properties::kDefaultMaxCircles;
+  // Called after each batch of generated cases with the verdict so far (its cases, its families' statuses), for
+  // a progress line; none by default.
+  std::function<void(const Verdict&)> progress{};
 };
 
 // "A,B,..." → those families of `profile`, for --families and --skip-families. Throws std::invalid_argument
@@ -110,7 +116,10 @@ struct Counterexample {
   // first fewer circles (RapidCheck's shrinks), then numbers simplified one at a time.
   std::vector<Circles> shrink_path;
   std::size_t circles_before = 0;              // circles of the world drawn
-  std::string replay;                          // "--seed 3 --case 3 --level exact": the options that replay it
+  std::uint64_t tries = 0;                     // simpler worlds asked while shrinking, kept or not
+  // The command that replays it (conform/replay.hpp): "circles conform --exec 'python3 step.py' --seed 3 --case 3
+  // --level exact".
+  std::string replay;
   std::filesystem::path saved;                 // where --save stored it, if it did
   std::string not_saved;                       // why it could not be stored, if it could not
   std::uint64_t shrinks() const { return shrink_path.empty() ? 0 : shrink_path.size() - 1; }

@@ -1,5 +1,6 @@
 #include "pictures/counterexample_svg.hpp"
 
+#include "formats/json_number.hpp"
 #include "impl/predicate.hpp"
 
 #include <cairo-svg.h>
@@ -16,8 +17,10 @@
 namespace circles::pictures {
 namespace {
 
-constexpr double kWidth = 900, kHeight = 760;
-constexpr double kTextBand = 130;  // the report's lines and the legend, above the world
+constexpr double kWidth = 900;
+constexpr double kWorldHeight = 630;  // the world's area, below the text band
+constexpr double kTextLeft = 10;      // the text's margin, left and right
+constexpr double kLineHeight = 15;
 constexpr double kMargin = 40;
 constexpr double kLeast = 3;       // the smallest radius drawn, in points
 constexpr double kMarker = 7;      // half the size of the + and × markers
@@ -34,8 +37,8 @@ void set(cairo_t* cr, Rgb c, double alpha = 1) { cairo_set_source_rgba(cr, c.r, 
 // In long double, whose range holds the squares and differences of any two doubles.
 class PageView {
  public:
-  PageView(long double x0, long double x1, long double y0, long double y1) {
-    const long double w = kWidth - 2 * kMargin, h = kHeight - kTextBand - 2 * kMargin;
+  PageView(double band, long double x0, long double x1, long double y0, long double y1) : band_(band) {
+    const long double w = kWidth - 2 * kMargin, h = kWorldHeight - 2 * kMargin;
     long double dx = x1 - x0, dy = y1 - y0;
     if (!(dx > 0) && !(dy > 0)) dx = dy = 1;  // a single point: any scale
     scale_ = std::min(dx > 0 ? w / dx : INFINITY, dy > 0 ? h / dy : INFINITY);
@@ -45,11 +48,12 @@ class PageView {
   }
   double x(double wx) const { return static_cast<double>(kWidth / 2 + (wx - cx_) * scale_); }
   double y(double wy) const {
-    return static_cast<double>(kTextBand + kMargin + (kHeight - kTextBand - 2 * kMargin) / 2 - (wy - cy_) * scale_);
+    return static_cast<double>(band_ + kWorldHeight / 2 - (wy - cy_) * scale_);
   }
   double length(double r) const { return std::max(kLeast, static_cast<double>(r * scale_)); }
 
  private:
+  double band_;
   long double scale_ = 1, cx_ = 0, cy_ = 0;
 };
 
@@ -57,7 +61,7 @@ class PageView {
 // has no place in the picture, and the report's lines say what it was.
 bool drawable(const std::array<double, 5>& c) { return std::isfinite(c[0]) && std::isfinite(c[1]) && std::isfinite(c[4]) && c[4] >= 0; }
 
-PageView fit(const CounterexamplePicture& p) {
+PageView fit(const CounterexamplePicture& p, double band) {
   long double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
   const auto include = [&](const std::array<double, 5>& c) {
     if (!drawable(c)) return;
@@ -70,8 +74,8 @@ PageView fit(const CounterexamplePicture& p) {
   for (const auto& c : p.world) include(c);
   if (p.circle < p.expected.size()) include(p.expected[p.circle]);
   if (p.circle < p.actual.size()) include(p.actual[p.circle]);
-  if (p.world.empty()) return PageView(0, 1, 0, 1);
-  return PageView(x0, x1, y0, y1);
+  if (p.world.empty()) return PageView(band, 0, 1, 0, 1);
+  return PageView(band, x0, x1, y0, y1);
 }
 
 void circle(cairo_t* cr, const PageView& v, const std::array<double, 5>& c) {
@@ -82,6 +86,31 @@ void circle(cairo_t* cr, const PageView& v, const std::array<double, 5>& c) {
 void text(cairo_t* cr, double x, double y, const std::string& s) {
   cairo_move_to(cr, x, y);
   cairo_show_text(cr, s.c_str());
+}
+
+// The lines of text as drawn: each line of the report cut at spaces so that it ends inside the picture, its
+// continuations indented by four spaces more than it. A word wider than the picture stays whole.
+std::vector<std::string> wrapped(cairo_t* cr, const std::vector<std::string>& lines) {
+  const auto width = [cr](const std::string& s) {
+    cairo_text_extents_t e;
+    cairo_text_extents(cr, s.c_str(), &e);
+    return e.x_advance;
+  };
+  std::vector<std::string> out;
+  for (const std::string& line : lines) {
+    const std::string indent(line.find_first_not_of(' ') == std::string::npos ? 0 : line.find_first_not_of(' ') + 4, ' ');
+    std::string rest = line;
+    while (width(rest) > kWidth - 2 * kTextLeft) {
+      std::size_t cut = rest.size();
+      do cut = rest.rfind(' ', cut - 1);
+      while (cut != std::string::npos && cut > indent.size() && width(rest.substr(0, cut)) > kWidth - 2 * kTextLeft);
+      if (cut == std::string::npos || cut <= indent.size()) break;
+      out.push_back(rest.substr(0, cut));
+      rest.replace(0, cut + 1, indent);
+    }
+    out.push_back(rest);
+  }
+  return out;
 }
 
 // The index of the least contact of circle k in lexicographic order on (px, py, vx, vy, r), then by index:
@@ -97,30 +126,62 @@ std::optional<std::size_t> least_contact(const Circles& w, std::size_t k, const 
 
 }  // namespace
 
+std::vector<std::string> position_labels(const CounterexamplePicture& p) {
+  const std::size_t k = p.circle;
+  if (k >= p.world.size() || k >= p.expected.size() || k >= p.actual.size()) return {};
+  const auto& expected = p.expected[k];
+  const auto& actual = p.actual[k];
+  if (!drawable(expected) || !drawable(actual)) return {};
+  const PageView v = fit(p, 0);
+  if (std::hypot(v.x(expected[0]) - v.x(actual[0]), v.y(expected[1]) - v.y(actual[1])) >= 2 * kMarker) return {};
+  const auto label = [](const char* what, const std::array<double, 5>& c) {
+    std::string text(what);
+    text.append(" (");
+    formats::json_number::append_any(text, c[0]);
+    text.append(", ");
+    formats::json_number::append_any(text, c[1]);
+    text.push_back(')');
+    return text;
+  };
+  return {label("expected", expected), label("answered", actual)};
+}
+
 std::string counterexample_svg(const CounterexamplePicture& p) {
   std::string svg;
   const auto write = [](void* closure, const unsigned char* data, unsigned int length) {
     static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
     return CAIRO_STATUS_SUCCESS;
   };
-  cairo_surface_t* surface = cairo_svg_surface_create_for_stream(write, &svg, kWidth, kHeight);
+  // The lines as they fit the width, measured in the font they are drawn in, set the height of the text band.
+  const auto set_font = [](cairo_t* c) {
+    cairo_select_font_face(c, "DejaVu Sans Mono", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_set_font_size(c, 11);
+  };
+  cairo_surface_t* scratch = cairo_image_surface_create(CAIRO_FORMAT_A8, 1, 1);
+  cairo_t* measure = cairo_create(scratch);
+  set_font(measure);
+  const std::vector<std::string> lines = wrapped(measure, p.lines);
+  cairo_destroy(measure);
+  cairo_surface_destroy(scratch);
+  const double band = std::max(130.0, 18 + kLineHeight * static_cast<double>(std::max<std::size_t>(lines.size(), 1) - 1) + 52);
+
+  cairo_surface_t* surface = cairo_svg_surface_create_for_stream(write, &svg, kWidth, band + kWorldHeight);
   cairo_t* cr = cairo_create(surface);
 
   set(cr, Rgb{1, 1, 1});
   cairo_paint(cr);
 
   // The text band.
-  cairo_select_font_face(cr, "DejaVu Sans Mono", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-  cairo_set_font_size(cr, 11);
+  set_font(cr);
   set(cr, kBlack);
   double line_y = 18;
-  for (const std::string& line : p.lines) {
-    text(cr, 10, line_y, line);
-    line_y += 15;
+  for (const std::string& line : lines) {
+    text(cr, kTextLeft, line_y, line);
+    line_y += kLineHeight;
   }
   // The legend, on one line.
-  double lx = 10;
-  const double ly = kTextBand - 12;
+  double lx = kTextLeft;
+  const double ly = band - 12;
   const auto swatch = [&](Rgb c, bool filled, bool dashed, const std::string& label) {
     set(cr, c);
     cairo_set_line_width(cr, 2);
@@ -156,12 +217,12 @@ std::string counterexample_svg(const CounterexamplePicture& p) {
   text(cr, lx + 18, ly, "contact");
   set(cr, kGrey);
   cairo_set_line_width(cr, 0.5);
-  cairo_move_to(cr, 0, kTextBand);
-  cairo_line_to(cr, kWidth, kTextBand);
+  cairo_move_to(cr, 0, band);
+  cairo_line_to(cr, kWidth, band);
   cairo_stroke(cr);
 
   const Circles& w = p.world;
-  const PageView v = fit(p);
+  const PageView v = fit(p, band);
   const std::size_t n = w.size();
   std::vector<std::vector<bool>> touch(n, std::vector<bool>(n, false));
   for (std::size_t a = 0; a < n; ++a)
@@ -211,7 +272,10 @@ std::string counterexample_svg(const CounterexamplePicture& p) {
       text(cr, v.x(w[j][0]) + 4, v.y(w[j][1]) - 4, std::string("#").append(std::to_string(j)));
     }
 
-  // Expected and answered positions of the circle that differs.
+  // Expected and answered positions of the circle that differs. Where the two markers fall on one another at
+  // the picture's scale, the + of the expected position is drawn larger than the × of the answered one, so that
+  // both show, and each is labelled with its position (position_labels).
+  const std::vector<std::string> labels = position_labels(p);
   if (drawn_k) {
     const double dash[] = {6, 4};
     for (const auto& [c, colour, cross] : {std::tuple{p.expected[k], kGreen, false}, std::tuple{p.actual[k], kRed, true}}) {
@@ -229,19 +293,32 @@ std::string counterexample_svg(const CounterexamplePicture& p) {
       cairo_stroke(cr);
       cairo_set_dash(cr, nullptr, 0, 0);
       const double x = v.x(c[0]), y = v.y(c[1]);
+      const double size = !labels.empty() && !cross ? 2 * kMarker : kMarker;
       cairo_new_path(cr);
       if (cross) {
-        cairo_move_to(cr, x - kMarker, y - kMarker);
-        cairo_line_to(cr, x + kMarker, y + kMarker);
-        cairo_move_to(cr, x - kMarker, y + kMarker);
-        cairo_line_to(cr, x + kMarker, y - kMarker);
+        cairo_move_to(cr, x - size, y - size);
+        cairo_line_to(cr, x + size, y + size);
+        cairo_move_to(cr, x - size, y + size);
+        cairo_line_to(cr, x + size, y - size);
       } else {
-        cairo_move_to(cr, x - kMarker, y);
-        cairo_line_to(cr, x + kMarker, y);
-        cairo_move_to(cr, x, y - kMarker);
-        cairo_line_to(cr, x, y + kMarker);
+        cairo_move_to(cr, x - size, y);
+        cairo_line_to(cr, x + size, y);
+        cairo_move_to(cr, x, y - size);
+        cairo_line_to(cr, x, y + size);
       }
       cairo_stroke(cr);
+      if (labels.empty()) continue;
+      // The label beside the markers, right of them or else left, the expected above the answered, kept inside
+      // the picture.
+      const std::string& label = labels[cross ? 1 : 0];
+      cairo_text_extents_t e;
+      cairo_text_extents(cr, label.c_str(), &e);
+      const double right = x + 3 * kMarker, left = x - 3 * kMarker - e.x_advance;
+      const double label_x = std::clamp(right + e.x_advance <= kWidth - kTextLeft ? right : left, kTextLeft,
+                                        kWidth - kTextLeft - e.x_advance);
+      const double label_y =
+          std::clamp(y + (cross ? 3 * kMarker : -2 * kMarker), band + kLineHeight, band + kWorldHeight - 5);
+      text(cr, label_x, label_y, label);
     }
   }
 

@@ -10,7 +10,9 @@
 //     it took instead, if any, filled red;
 //   - its expected next position as a dashed green circle with a + at the centre, the position answered as a
 //     dashed red circle with a × at the centre, each joined to the present centre by a thin line. The two
-//     markers are a fixed size, so that positions one ulp apart, which coincide at any scale, both show.
+//     markers are a fixed size; where they fall on one another (positions one ulp apart coincide at any
+//     scale), the + is drawn twice as large, so that both show, and each is labelled with its position.
+// The report's lines are cut at spaces to fit the width, and the picture grows taller to hold them.
 #pragma once
 
 #include "formats/protocol.hpp"
@@ -32,8 +34,13 @@ struct CounterexamplePicture {
   std::vector<std::string> lines;  // the text above the picture, one line each
 };
 
-// The SVG document, 900 × 760 points. Coordinates are mapped to the picture in long double, so that worlds
-// near DBL_MAX or among the subnormals are drawn too.
+// The SVG document, 900 × 760 points, taller when the report's lines wrap to more than four. Coordinates are
+// mapped to the picture in long double, so that worlds near DBL_MAX or among the subnormals are drawn too.
 std::string counterexample_svg(const CounterexamplePicture& picture);
+
+// The labels of the expected and answered positions of the circle that differs, "expected (0.5, 0.0)" and
+// "answered (0.5000000000000001, 0.0)", where their markers fall on one another in the picture; none where
+// they lie apart or either position cannot be drawn.
+std::vector<std::string> position_labels(const CounterexamplePicture& picture);
 
 }  // namespace circles::pictures

@@ -32,6 +32,10 @@ std::uint64_t ulps_between(double a, double b) {
                   : static_cast<std::uint64_t>(rb) - static_cast<std::uint64_t>(ra);
 }
 
+// The two decisions of a step, each with its section of docs/math.md.
+const std::string kIntersect = "the intersect test (3) (docs/math.md#3-intersect--specintersect): ";
+const std::string kLeastContact = "the least-contact rule e (8) (docs/math.md#8-e--spece): ";
+
 // Which decision of circle k's step differs (at `field`, the first that does): its contacts by (3), exactly, on
 // the input doubles. A radius is judged only when the position and velocity before it are right, and no decision
 // touches it.
@@ -46,15 +50,15 @@ std::string decision(const Circles& in, std::size_t k, int field, const Circles&
     if (j != k && impl::intersect_exact(in[k][0], in[k][1], in[k][4], in[j][0], in[j][1], in[j][4]))
       contacts.push_back(j);
   const std::string circle = "circle " + std::to_string(k);
-  if (contacts.empty()) return "intersect (3): " + circle + " touches no circle, yet its velocity changed";
+  if (contacts.empty()) return kIntersect + circle + " touches no circle, yet its velocity changed";
   if (same_velocity(actual[k], in[k]))
-    return "intersect (3): " + circle + " touches circle " + std::to_string(contacts.front()) +
+    return kIntersect + circle + " touches circle " + std::to_string(contacts.front()) +
            (contacts.size() > 1 ? " and others" : "") + " but kept its own velocity";
   for (const std::size_t j : contacts)
     if (same_velocity(actual[k], in[j]))
-      return "the choice of e (8): " + circle + " took the velocity of circle " + std::to_string(j) +
+      return kLeastContact + circle + " took the velocity of circle " + std::to_string(j) +
              ", a contact but not the least one";
-  return "the choice of e (8): " + circle + " took a velocity that none of its contacts has";
+  return kLeastContact + circle + " took a velocity that none of its contacts has";
 }
 
 std::string hex(double x) {

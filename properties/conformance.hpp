@@ -48,10 +48,11 @@ struct Difference {
   std::size_t circle;
   int field;  // 0 px, 1 py, 2 vx, 3 vy, 4 r
   double expected, actual;
-  // Which decision differs: "intersect (3): circle 0 touches circle 1 but kept its own velocity", "the
-  // choice of e (8): …", "none: the velocity is right, the position is not the nearest double", or, for a
-  // radius (which no step changes), "none: the position and velocity are right, but the radius changed, which no
-  // step does".
+  // Which decision differs, in words, with its section of docs/math.md: "the intersect test (3)
+  // (docs/math.md#3-intersect--specintersect): circle 0 touches circle 1 but kept its own velocity", "the
+  // least-contact rule e (8) (docs/math.md#8-e--spece): …", "none: the velocity is right, the position is not the
+  // nearest double", or, for a radius (which no step changes), "none: the position and velocity are right, but
+  // the radius changed, which no step does".
   std::string decision;
 };
 std::optional<Difference> compare(const Circles& input, const Circles& expected, const Circles& actual, Level level);

@@ -31,6 +31,9 @@ set -e
 [ "$got" -eq 0 ] || fail "the campaign exited $got: $(cat "$dir/out" "$dir/campaign/shards.log")"
 [ "$(ls "$dir/campaign"/shard-*.json | wc -l)" -eq 4 ] || fail "not 4 shard reports: $(ls "$dir/campaign")"
 same verdict cases families seed
+# The campaign ends with the merged verdict in one line.
+[ "$(cat "$dir/out")" = "circles report merge: $dir/campaign/report.json: the double engine conforms: 1700 cases of seed 5 in 4 reports" ] ||
+  fail "no verdict line: $(cat "$dir/out")"
 grep -q '"shard": "0,1,2,3/4"' "$dir/campaign/report.json" || fail "the shards merged are not named"
 
 naive="python3 $source_dir/examples/python/step_naive.py"
@@ -41,3 +44,5 @@ got=$?
 set -e
 [ "$got" -eq 1 ] || fail "the campaign of a wrong candidate exited $got: $(cat "$dir/out" "$dir/campaign/shards.log")"
 same verdict counterexample.case counterexample.world counterexample.difference
+grep -q "^circles report merge: $dir/campaign/report.json: the program \`$naive\` does not conform: [0-9]* cases of seed 3 in 4 reports; replay: circles conform --exec '$naive' --seed 3 --case [0-9]* --level exact$" "$dir/out" ||
+  fail "no verdict line: $(cat "$dir/out")"

@@ -216,7 +216,8 @@ TEST(check_trace, a_velocity_kept_through_a_contact_is_named_as_the_decision_of_
   EXPECT_EQ(o.code, 1);
   EXPECT_EQ(o.out, "circles check-trace: " + path + ":2: step 5 differs from the correctly rounded step of line 1: "
                        "circle 0, field px: expected " + shown(-1.0, "-1.0") + ", actual " + shown(1.0, "1.0") +
-                       "\n  which decision: intersect (3): circle 0 touches circle 1 but kept its own velocity\n"
+                       "\n  which decision: the intersect test (3) (docs/math.md#3-intersect--specintersect): circle 0 "
+                       "touches circle 1 but kept its own velocity\n"
                        "  the worlds before it agree (steps 4 to 4, 2 circles; trajectory hash " +
                        hex(impl::state_hash(Circles{{0, 0, 60, 0, 1}, {2, 0, -60, 0, 1}})) + ")\n");
 }

@@ -118,6 +118,42 @@ main_job_exits_0_with_every_engine_in_agreement)
   grep -qx 'double engine: agrees with the correctly rounded oracle at each of the 100 steps' "$dir/out" ||
     fail "no agreement line: $(tail -n 3 "$dir/out")"
   ;;
+usage_errors_name_the_command_and_suggest_the_nearest_name)
+  # usage LINE ARGS...: `circles ARGS` exits 2 with the one line LINE on stderr and nothing on stdout.
+  usage() {
+    message=$1
+    shift
+    expect_exit 2 "$circles" "$@" >"$dir/out" 2>"$dir/err"
+    [ "$(cat "$dir/err")" = "$message" ] && [ ! -s "$dir/out" ] || fail "circles $*: $(cat "$dir/err" "$dir/out")"
+  }
+  usage 'circles: unknown command `rn`: did you mean `run`?' rn
+  usage 'circles: unknown command `conforn`: did you mean `conform`?' conforn --exec x
+  usage 'circles: unknown command `xyzzy`; `circles --help` lists the commands' xyzzy
+  usage 'circles report: unknown command `merj`: did you mean `merge`?' report merj
+  usage 'circles conform: unknown option `--step`: did you mean `--steps`?' conform --step 3
+  usage 'circles conform: unknown option `--frobnicate`; `circles conform --help` lists the options' conform --frobnicate
+  usage 'circles conform: unexpected argument `extra`; `circles conform --help` lists what it takes' conform extra
+  usage 'circles run: --steps: Value x not in range 0 to 9223372036854775807' run --steps x
+  ;;
+version_and_help_say_what_the_program_is)
+  # --version: project()'s version, and the commit of a build from git.
+  "$circles" --version >"$dir/out"
+  grep -Eqx 'circles [0-9]+\.[0-9]+\.[0-9]+( \(commit [0-9a-f]{12}(-dirty)?\))?' "$dir/out" ||
+    fail "--version: $(cat "$dir/out")"
+  # --help says what plain `circles` does.
+  "$circles" --help >"$dir/out"
+  grep -q '^With no command, plain `circles` runs the main job on the embedded default scene' "$dir/out" ||
+    fail "--help: $(cat "$dir/out")"
+  # run --help shows the scene's own "steps" as the default of --steps: 1200 for the cradle, 100 for the
+  # default scene, which has none.
+  printf '{"steps": 1200, "circles": [[0, 0, 0, 0, 1]]}' >"$dir/scene.json"
+  "$circles" run "$dir/scene.json" --help >"$dir/out"
+  grep -q '^  --steps .*=1200$' "$dir/out" || fail "run SCENE --help: $(cat "$dir/out")"
+  "$circles" oracle "$dir/scene.json" --help >"$dir/out"
+  grep -q '^  --steps .*=1200$' "$dir/out" || fail "oracle SCENE --help: $(cat "$dir/out")"
+  "$circles" run --help >"$dir/out"
+  grep -q '^  --steps .*=100$' "$dir/out" || fail "run --help: $(cat "$dir/out")"
+  ;;
 *)
   fail "no case $case_name"
   ;;

@@ -133,7 +133,7 @@ TEST(ConformCommand, families_check_only_those_and_skip_the_others) {
   EXPECT_EQ(r.status, 0) << r.err;
   // Lattice's one case of the 17, its family's only case in one round.
   EXPECT_EQ(first_line(r.out),
-            "circles conform: the double engine conforms: 1 case, level exact, seed 2, resolved profile");
+            "circles conform: the double engine conforms: 1 case, 1 step each, level exact, seed 2, resolved profile");
   EXPECT_NE(r.out.find("\n  lattice             1       passed\n"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("\n  random-doubles      0       skipped\n"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("\n  families: 1 passed, 16 skipped\n"), std::string::npos) << r.out;
@@ -177,8 +177,8 @@ TEST(ConformCommand, a_conforming_engine_exits_0_with_the_verdict_on_the_first_l
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.err, "");
   EXPECT_EQ(first_line(r.out),
-            "circles conform: the double engine conforms: 17 cases, 1 step each (tangent-after-step 2: chained to the "
-            "step that decides its boundary), level exact, seed 2, resolved profile");
+            "circles conform: the double engine conforms: 17 cases, 1 step each (2 for tangent-after-step, whose "
+            "boundary comes only at step 2), level exact, seed 2, resolved profile");
 }
 
 TEST(ConformCommand, one_case_is_counted_in_the_singular) {
@@ -194,7 +194,7 @@ TEST(ConformCommand, one_case_is_counted_in_the_singular) {
   r = run(options);
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(first_line(r.out),
-            "circles conform: the double engine conforms: 1 case, level exact, seed 2, resolved profile");
+            "circles conform: the double engine conforms: 1 case, 1 step each, level exact, seed 2, resolved profile");
 }
 
 TEST(ConformCommand, one_case_skipped_and_one_chain_cut_short_are_counted_in_the_singular) {
@@ -221,6 +221,11 @@ TEST(ConformCommand, one_case_skipped_and_one_chain_cut_short_are_counted_in_the
             "  cases checked per family:\n"
             "  2 chains ended early: their next world leaves the double range\n");
   EXPECT_EQ(err.str(), "");
+  // --keep-going's table opens with the same line: the skipped cases and the steps are there too.
+  v.options.keep_going = true;
+  EXPECT_EQ(first_line(printed(2)),
+            "circles conform: the double engine conforms: 17 cases (2 skipped: their next world leaves the double "
+            "range), 1 step each, level exact, seed 2, resolved profile");
 }
 
 TEST(ConformCommand, a_family_listed_as_failing_that_passes_fails_the_run_with_its_line) {
@@ -231,7 +236,8 @@ TEST(ConformCommand, a_family_listed_as_failing_that_passes_fails_the_run_with_i
   EXPECT_EQ(r.status, 1) << r.err;
   // --expect implies --keep-going: the table, then the unexpected pass after it.
   EXPECT_EQ(first_line(r.out),
-            "circles conform: the double engine does not conform: 17 cases, level exact, seed 2, resolved profile");
+            "circles conform: the double engine does not conform: 17 cases, 1 step each (2 for tangent-after-step, whose "
+            "boundary comes only at step 2), level exact, seed 2, resolved profile");
   EXPECT_NE(r.out.find("\nlattice: unexpected pass (1 case checked): delete its line, " + options.expect + ":1\n"),
             std::string::npos)
       << r.out;

@@ -111,7 +111,7 @@ judges_nan_infinity_and_signed_zeros_in_every_field_and_step)
     for field in px py vx vy r; do
       case $field in
       px | py) decision="none: the velocity is right, the position is not the nearest double" ;;
-      vx | vy) decision="intersect (3): circle 0 touches no circle, yet its velocity changed" ;;
+      vx | vy) decision="the intersect test (3) (docs/math.md#3-intersect--specintersect): circle 0 touches no circle, yet its velocity changed" ;;
       r) decision="none: the position and velocity are right, but the radius changed, which no step does" ;;
       esac
       tokens="NaN Infinity -Infinity 1e400"
@@ -138,9 +138,9 @@ exits_2_for_a_count_beyond_2_63_or_threads_with_a_program)
   # CLI11 reads "-1" as 2^64 - 1: as --cases it would run for ever, as --case check nothing (I + 1 wraps) and
   # conform. And --threads is an engine's: a program given with --exec runs its own.
   run_conform 2 --cases -1 --engine double
-  grep -q "^--cases: Value -1 not in range 0 to 9223372036854775807$" "$dir/err" || fail "$(cat "$dir/err")"
+  grep -q "^circles conform: --cases: Value -1 not in range 0 to 9223372036854775807$" "$dir/err" || fail "$(cat "$dir/err")"
   run_conform 2 --case 18446744073709551615 --engine double
-  grep -q "^--case: Value 18446744073709551615 not in range 0 to 9223372036854775807$" "$dir/err" || fail "$(cat "$dir/err")"
+  grep -q "^circles conform: --case: Value 18446744073709551615 not in range 0 to 9223372036854775807$" "$dir/err" || fail "$(cat "$dir/err")"
   run_conform 2 --threads 2 --exec "python3 $source_dir/examples/python/step.py"
   [ "$(cat "$dir/err")" = "circles conform: --threads sets the threads of an --engine; a program given with --exec runs its own" ] ||
     fail "unexpected message: $(cat "$dir/err")"
@@ -152,14 +152,16 @@ keeps_going_and_gates_on_an_expectation_file)
   grep -q "^picture: $dir/first.svg$" "$dir/out" && [ -s "$dir/first.svg" ] || fail "no picture: $(cat "$dir/out")"
   for family in lattice random-doubles tangency ulp-nudge tie-px tie-p tie-p-vx tie-p-v duplicates incomparable \
       mutual-contacts square-overflow subnormals cancellation zero-radius; do
-    grep -q "^  $family  *[0-9][0-9]*  *failed$" "$dir/out" || fail "$family did not fail: $(cat "$dir/out")"
+    grep -Eq "^  $family +[0-9]+ +failed at its [0-9]+(st|nd|rd|th) case; none asked after$" "$dir/out" ||
+      fail "$family did not fail: $(cat "$dir/out")"
     grep -q "^$family fail TODO: why it fails$" "$dir/naive.expect" || fail "$family is not in the file: $(cat "$dir/naive.expect")"
   done
   for family in tangent-after-step signed-zeros; do
     grep -q "^  $family  *[0-9][0-9]*  *passed$" "$dir/out" || fail "$family did not pass: $(cat "$dir/out")"
   done
   grep -q "^  families: 15 failed, 2 passed$" "$dir/out" || fail "no summary: $(cat "$dir/out")"
-  [ "$(grep -c "replay: --seed 1 --case" "$dir/out")" -eq 15 ] || fail "not a replay line per failure: $(cat "$dir/out")"
+  [ "$(grep -c "replay: circles conform --exec 'python3 $source_dir/examples/python/step_naive.py' --seed 1 --case" "$dir/out")" -eq 15 ] ||
+    fail "not a replay line per failure: $(cat "$dir/out")"
   # With the file it wrote, the naive example passes the gate.
   run_conform 0 --cases 1000 --seed 1 --exec "$naive" --expect "$dir/naive.expect"
   grep -q "^  families: 15 expected failure, 2 passed$" "$dir/out" || fail "no expected failures: $(cat "$dir/out")"
@@ -170,7 +172,7 @@ keeps_going_and_gates_on_an_expectation_file)
   # A wrong implementation whose failures the file does not list (float32 fails signed-zeros too).
   run_conform 1 --cases 1000 --seed 1 --exec "python3 $source_dir/examples/python/step_float32.py" \
     --expect "$dir/naive.expect"
-  grep -q "^  signed-zeros  *[0-9][0-9]*  *failed$" "$dir/out" || fail "signed-zeros did not fail: $(cat "$dir/out")"
+  grep -q "^  signed-zeros  *[0-9][0-9]*  *failed at its " "$dir/out" || fail "signed-zeros did not fail: $(cat "$dir/out")"
   ;;
 exits_2_for_unknown_families_and_bad_expectation_files)
   run_conform 2 --families lattice,sideways --exec true
@@ -185,6 +187,66 @@ exits_2_for_unknown_families_and_bad_expectation_files)
   # A run that cannot write its expectation file leaves nothing behind and exits 2.
   run_conform 2 --cases 100 --seed 1 --exec "$naive" --write-expect "$dir/missing/naive.expect"
   [ ! -e "$dir/missing" ] || fail "wrote $dir/missing"
+  ;;
+replay_lines_reproduce_their_counterexample_pasted_into_sh)
+  # The replay line is a whole command: pasted into sh, with `circles` on PATH, it prints the same report. The
+  # candidate's path holds a space and a quote, so the line must quote it for sh; the options that change the
+  # case (--steps, --profile, --level, --skip-families) must be on it.
+  mkdir "$dir/it's here"
+  cp "$source_dir/examples/python/step_naive.py" "$dir/it's here/"
+  quoted="python3 \"$dir/it's here/step_naive.py\""
+  PATH="$(cd "$(dirname "$circles")" && pwd):$PATH"
+  replayed() { # replayed LINE: runs the replay LINE in sh, stdout to $dir/again; it must exit 1.
+    set +e
+    sh -c "$1" >"$dir/again" 2>&1
+    got=$?
+    set -e
+    [ "$got" -eq 1 ] || fail "the replay line exited $got: $1: $(cat "$dir/again")"
+  }
+  run_conform 1 --seed 3 --steps 2 --profile literal --level ulps:2 --skip-families lattice --exec "$quoted" \
+    --report "$dir/r.json" --junit "$dir/r.xml"
+  line=$(sed -n 's/^replay: //p' "$dir/out")
+  case $line in
+  "circles conform --exec 'python3 \"$dir/it'\\''s here/step_naive.py\"' --seed 3 --case "*" --level ulps:2 --steps 2 --profile literal --skip-families lattice") ;;
+  *) fail "the replay line is not the whole command: $line" ;;
+  esac
+  replayed "$line"
+  cmp "$dir/out" "$dir/again" || fail "the replay line printed another report: $(cat "$dir/again")"
+  # The reports for CI carry the same line.
+  python3 - "$dir/r.json" "$dir/r.xml" "$line" <<'PY' || fail "the reports' replay lines differ from the printed one"
+import json, sys, xml.etree.ElementTree as ET
+report, junit, line = json.load(open(sys.argv[1])), ET.parse(sys.argv[2]).getroot(), sys.argv[3]
+assert report["counterexample"]["replay"] == line, report["counterexample"]["replay"]
+assert [c["replay"] for c in report["counterexamples"]] == [line], report["counterexamples"]
+assert ("replay: " + line + "\n") in junit.find("testsuite/testcase/failure").text
+PY
+  # Each --keep-going row's line replays its own family's counterexample; the row shows its world, and the
+  # reports carry each row's counterexample, with which decision differs.
+  run_conform 1 --seed 3 --keep-going --families ulp-nudge,tie-p-vx,cancellation --exec "$quoted" \
+    --report "$dir/r.json" --junit "$dir/r.xml"
+  [ "$(grep -c '^ *the world asked (w_0):$' "$dir/out")" -eq 3 ] || fail "not a world per row: $(cat "$dir/out")"
+  python3 - "$dir/r.json" "$dir/r.xml" <<'PY' || fail "the reports do not hold each row's counterexample"
+import json, sys, xml.etree.ElementTree as ET
+report, junit = json.load(open(sys.argv[1])), ET.parse(sys.argv[2]).getroot()
+assert [c["family"] for c in report["counterexamples"]] == ["ulp-nudge", "tie-p-vx", "cancellation"], report["counterexamples"]
+failures = junit.findall("testsuite/testcase/failure")
+assert len(failures) == 3 and all("which decision: " in f.text for f in failures), [f.text for f in failures]
+PY
+  [ "$(grep -c '^ *replay: circles conform ' "$dir/out")" -eq 3 ] || fail "not 3 replay lines: $(cat "$dir/out")"
+  grep '^ *step 1 of 1, ' "$dir/out" | sed 's/^ *//; s/; which decision: .*//' >"$dir/rows"
+  sed -n 's/^ *replay: //p' "$dir/out" | while IFS= read -r line; do
+    replayed "$line"
+    sed -n 3p "$dir/again" | sed 's/^ *//' >>"$dir/replayed"
+  done
+  cmp "$dir/rows" "$dir/replayed" || fail "the rows' replay lines found other counterexamples: $(cat "$dir/replayed")"
+  # A counterexample replayed from the corpus: its line replays the corpus alone.
+  run_conform 1 --seed 3 --save "$dir/corpus" --exec "$quoted"
+  run_conform 1 --seed 4 --save "$dir/corpus" --exec "$quoted"
+  line=$(sed -n 's/^replay: //p' "$dir/out")
+  [ "$line" = "circles conform --exec 'python3 \"$dir/it'\\''s here/step_naive.py\"' --save $dir/corpus --cases 0 --level exact" ] ||
+    fail "the corpus's replay line: $line"
+  replayed "$line"
+  cmp "$dir/out" "$dir/again" || fail "the corpus's replay line printed another report: $(cat "$dir/again")"
   ;;
 replays_the_committed_corpus_with_each_engine)
   # A copy, so that a failure writes its picture there rather than into the source tree.

@@ -151,16 +151,19 @@ TEST(conform, compares_positions_within_the_level_and_decisions_exactly) {
   Circles kept = expected;
   kept[0][2] = in[0][2];
   EXPECT_EQ(compare(in, expected, kept, Level{1000})->decision,
-            "intersect (3): circle 0 touches circle 1 but kept its own velocity");
+            "the intersect test (3) (docs/math.md#3-intersect--specintersect): circle 0 touches circle 1 but kept "
+            "its own velocity");
   Circles phantom = expected;
   phantom[2][2] = 7;
   EXPECT_EQ(compare(in, expected, phantom, Level{1000})->decision,
-            "intersect (3): circle 2 touches no circle, yet its velocity changed");
+            "the intersect test (3) (docs/math.md#3-intersect--specintersect): circle 2 touches no circle, yet its "
+            "velocity changed");
   const Circles three{{0, 0, 1, 0, 1}, {1, 0, 2, 0, 1}, {-1, 0, 3, 0, 1}};
   Circles chose = spec::resolved_step_rounded(three);
   chose[0][2] = 2;  // circle 1's velocity; the least contact of circle 0 is circle 2 (px −1 < 1)
   EXPECT_EQ(compare(three, spec::resolved_step_rounded(three), chose, Level{1000})->decision,
-            "the choice of e (8): circle 0 took the velocity of circle 1, a contact but not the least one");
+            "the least-contact rule e (8) (docs/math.md#8-e--spece): circle 0 took the velocity of circle 1, a "
+            "contact but not the least one");
 }
 
 // NaN and the infinities differ from every expected value, in every field, at every level: never "equal" from
@@ -255,10 +258,12 @@ TEST(conform, rejects_a_strict_intersect_with_a_counterexample_shrunk_to_two_tan
   EXPECT_EQ(c.input.size(), 2u);
   EXPECT_EQ(c.shrink_path.front().size(), c.circles_before);
   EXPECT_EQ(c.shrink_path.back(), c.input);  // one step: the world asked is the shrunk w_0
-  EXPECT_TRUE(c.difference.decision.starts_with("intersect (3): circle")) << c.difference.decision;
+  EXPECT_TRUE(c.difference.decision.starts_with("the intersect test (3) (docs/math.md#3-intersect--specintersect): circle"))
+      << c.difference.decision;
   EXPECT_TRUE(c.difference.decision.ends_with("but kept its own velocity")) << c.difference.decision;
   ASSERT_TRUE(c.case_index);
-  EXPECT_EQ(c.replay, "--seed 7 --case " + std::to_string(*c.case_index) + " --level exact");
+  // A function in process: no option selects it on the command line.
+  EXPECT_EQ(c.replay, "circles conform --seed 7 --case " + std::to_string(*c.case_index) + " --level exact");
   EXPECT_EQ(c.expected, spec::resolved_step_rounded(c.input));
   EXPECT_EQ(c.actual, strict_intersect_step(c.input));
   // The counterexample is attached to its family, whose status is failed.
@@ -285,7 +290,8 @@ TEST(conform, chains_the_tangent_after_step_family_to_the_step_that_decides_its_
   EXPECT_EQ(c.family, "tangent-after-step");
   EXPECT_EQ(c.step, 2u);
   EXPECT_EQ(c.steps, 2u);
-  EXPECT_TRUE(c.difference.decision.starts_with("intersect (3): circle")) << c.difference.decision;
+  EXPECT_TRUE(c.difference.decision.starts_with("the intersect test (3) (docs/math.md#3-intersect--specintersect): circle"))
+      << c.difference.decision;
   EXPECT_TRUE(c.difference.decision.ends_with("but kept its own velocity")) << c.difference.decision;
   EXPECT_NE(c.input, c.shrink_path.back());  // the world asked is the candidate's own first answer
   // Its first steps are right: the cases of every other family, chained one step, pass.
@@ -393,7 +399,7 @@ TEST(conform, the_literal_profile_refuses_a_step_that_ignores_the_product_order)
   options.profile = Profile::literal;
   const Verdict v = check(greatest, options);
   ASSERT_EQ(v.outcome, Outcome::does_not_conform) << describe(v);
-  EXPECT_TRUE(v.counterexample->difference.decision.starts_with("the choice of e (8)"));
+  EXPECT_TRUE(v.counterexample->difference.decision.starts_with("the least-contact rule e (8)"));
   EXPECT_TRUE(v.counterexample->replay.ends_with(" --profile literal")) << v.counterexample->replay;
 }
 
@@ -440,7 +446,7 @@ TEST(conform, saves_a_counterexample_and_replays_it_first_on_every_run) {
   EXPECT_EQ(second.counterexample->found_case, c.case_index);
   EXPECT_EQ(second.counterexample->found_seed, 7u);
   EXPECT_EQ(second.counterexample->family, c.family);
-  EXPECT_EQ(second.counterexample->replay, "--save " + corpus.string() + " --level exact (the corpus is replayed first)");
+  EXPECT_EQ(second.counterexample->replay, "circles conform --save " + corpus.string() + " --cases 0 --level exact");
   EXPECT_EQ(files_in(corpus, ".json").size(), 1u);  // not saved twice
 
   // A right step passes it, and says so.

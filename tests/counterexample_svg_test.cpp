@@ -1,5 +1,6 @@
 // The picture of a counterexample (pictures/counterexample_svg.hpp): every circle inside the page from the
-// subnormals to DBL_MAX, one line per contact, the expected and answered positions dashed.
+// subnormals to DBL_MAX, one line per contact, the expected and answered positions dashed and, where they
+// coincide, labelled, and the text wrapped inside the page.
 #include "pictures/counterexample_svg.hpp"
 
 #include <gtest/gtest.h>
@@ -8,6 +9,7 @@
 #include <cmath>
 #include <limits>
 #include <regex>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -66,6 +68,68 @@ TEST(counterexample_svg, draws_one_line_for_each_contact_and_the_expected_and_an
   std::size_t dashed = 0;
   for (std::size_t at = 0; (at = svg.find("stroke-dasharray", at)) != std::string::npos; ++at) ++dashed;
   EXPECT_EQ(dashed, 4u);  // expected and answered, in the picture and in the legend
+}
+
+// The x of each glyph of the text, and its colour ("rgb(0%,0%,0%)"): Cairo writes text as <use> elements, a
+// glyph each, in groups <g style="fill:COLOUR;...">.
+std::vector<std::pair<double, std::string>> glyphs_in(const std::string& svg) {
+  std::vector<std::pair<double, std::string>> glyphs;
+  static const std::regex group(R"re(<g style="fill:(rgb\([^)]*\));[^"]*">((?:\s*<use [^>]*/>)*))re"),
+      use(R"re(<use xlink:href="#glyph[^"]*" x="([^"]*)")re");
+  for (std::sregex_iterator g(svg.begin(), svg.end(), group), end; g != end; ++g) {
+    const std::string uses = (*g)[2];
+    for (std::sregex_iterator u(uses.begin(), uses.end(), use); u != end; ++u)
+      glyphs.emplace_back(std::stod((*u)[1]), (*g)[1]);
+  }
+  return glyphs;
+}
+
+// The head lines of `circles conform --seed 3 --exec 'python3 examples/python/step_naive.py'`.
+const std::vector<std::string> kNaiveLines = {
+    "circles conform: the program `python3 examples/python/step_naive.py` does not conform (level exact, resolved "
+    "profile)",
+    "counterexample: case 3 of seed 3 (family ulp-nudge), shrunk from 2 to 1 circle in 2014 tries",
+    "  step 1 of 1, circle 0, field px: expected 0.023966666666666667 (0x1.88ab7c61c2039p-6), got "
+    "0.023966666666666664 (0x1.88ab7c61c2038p-6)",
+    "  which decision: none: the velocity is right, the position is not the nearest double"};
+
+TEST(counterexample_svg, wraps_each_line_of_text_to_end_inside_the_picture) {
+  const Circles w{{0, 0, 1.438, 0, 0}};
+  Circles expected = w, actual = w;
+  expected[0][0] = 0.023966666666666667;
+  actual[0][0] = 0.023966666666666664;
+  for (const std::size_t n : {4, 12}) {
+    std::vector<std::string> lines = kNaiveLines;
+    while (lines.size() < n) lines.push_back(kNaiveLines[2]);
+    const std::string svg = counterexample_svg({w, expected, actual, 0, Profile::resolved, lines});
+    const std::vector<std::pair<double, std::string>> glyphs = glyphs_in(svg);
+    ASSERT_GT(glyphs.size(), 300u);
+    // DejaVu Sans Mono at 11 points advances 6.6 points a glyph; the text keeps a margin of 10.
+    for (const auto& [x, colour] : glyphs) ASSERT_LE(x + 6.6, 890.01) << x;
+    // Twelve lines, wrapped, need a taller text band: the picture grows rather than drawing over the world.
+    if (n == 4) EXPECT_NE(svg.find(R"(width="900pt" height="760pt")"), std::string::npos);
+    else EXPECT_EQ(svg.find(R"(height="760pt")"), std::string::npos);
+  }
+}
+
+TEST(counterexample_svg, labels_the_expected_and_answered_positions_where_their_markers_coincide) {
+  const Circles w{{0, 0, 1.438, 0, 0}};
+  Circles expected = w, actual = w;
+  expected[0][0] = 0.023966666666666667;
+  actual[0][0] = 0.023966666666666664;  // one ulp apart: one point at any scale
+  const CounterexamplePicture close{w, expected, actual, 0, Profile::resolved, {}};
+  EXPECT_EQ(position_labels(close),
+            (std::vector<std::string>{"expected (0.023966666666666667, 0.0)", "answered (0.023966666666666664, 0.0)"}));
+  // Each label is drawn, in its marker's colour: green for the expected, red for the answered.
+  std::set<std::string> colours;
+  for (const auto& [x, colour] : glyphs_in(counterexample_svg(close))) colours.insert(colour);
+  EXPECT_TRUE(colours.contains("rgb(10%,60%,10%)"));
+  EXPECT_TRUE(colours.contains("rgb(80%,10%,10%)"));
+  // Apart in the picture, the markers need no label.
+  actual[0][0] = -1;
+  const CounterexamplePicture apart{w, expected, actual, 0, Profile::resolved, {}};
+  EXPECT_TRUE(position_labels(apart).empty());
+  for (const auto& [x, colour] : glyphs_in(counterexample_svg(apart))) EXPECT_EQ(colour, "rgb(0%,0%,0%)") << x;
 }
 
 }  // namespace

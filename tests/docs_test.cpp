@@ -233,6 +233,20 @@ TEST(docs, every_link_in_the_markdown_leads_to_a_file_and_heading_inside_the_rep
   EXPECT_GT(links, 50);
 }
 
+// A counterexample names the decision that differs with its section of docs/math.md ("the intersect test (3)
+// (docs/math.md#3-intersect--specintersect): ..."): each such section is a heading there.
+TEST(docs, each_decision_a_counterexample_names_points_at_a_heading_of_math_md) {
+  const std::string text = text_of("properties/conformance.cpp");
+  const std::set<std::string> anchors = anchors_of("docs/math.md");
+  const std::regex section(R"(docs/math\.md#([a-z0-9_-]+))");
+  std::set<std::string> named;
+  for (std::sregex_iterator s(text.begin(), text.end(), section), end; s != end; ++s) named.insert((*s)[1]);
+  EXPECT_EQ(named, (std::set<std::string>{"3-intersect--specintersect", "8-e--spece"}));
+  for (const std::string& anchor : named)
+    EXPECT_TRUE(anchors.contains(anchor)) << "properties/conformance.cpp names docs/math.md#" << anchor
+                                          << ", a heading docs/math.md does not have";
+}
+
 // The rows of docs/protocol.md's command table: the cell `circles COMMAND [--option ...]`, unescaped.
 std::vector<std::string> commands_in_protocol_md() {
   std::vector<std::string> rows;

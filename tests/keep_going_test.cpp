@@ -76,7 +76,10 @@ TEST(keep_going, fails_exactly_the_families_the_naive_steps_two_mistakes_reach_w
     EXPECT_EQ(c.family, properties::name(f.family));
     EXPECT_EQ(c.expected, exact_step(c.input));
     EXPECT_EQ(c.actual, naive_step(c.input));
-    EXPECT_EQ(c.replay, "--seed 1 --case " + std::to_string(*c.case_index) + " --level exact");
+    EXPECT_EQ(c.replay, "circles conform --seed 1 --case " + std::to_string(*c.case_index) + " --level exact");
+    // Its count stops at its failure: its cases drawn are those up to the failing one (one a round of F cases),
+    // though the cases after it in the same batch were asked.
+    EXPECT_EQ(f.drawn, *c.case_index / v.families.size() + 1) << properties::name(f.family);
   }
   // The run's counterexample is the first of them, of the lowest case.
   ASSERT_TRUE(v.counterexample);

@@ -146,6 +146,14 @@ TEST(report, merges_the_reports_of_shards_into_the_unsharded_runs_cases_and_verd
   EXPECT_EQ(both["verdict"], "does not conform");
   EXPECT_EQ(both["counterexample"]["family"], "early");
   EXPECT_EQ(both["cases"], 2 * unsharded["cases"].get<int>());
+  // Every family's counterexample, the one of its lowest case over the shards, in the families' order.
+  early["counterexamples"] = {{{"case", 3}, {"family", "tangency"}}, {{"case", 40}, {"family", "lattice"}}};
+  late["counterexamples"] = {{{"case", 20}, {"family", "lattice"}}, {{"case", 36}, {"family", "zero-radius"}}};
+  const nlohmann::json all = nlohmann::json::parse(merge_reports({late.dump(), early.dump()}, {"late", "early"}));
+  std::vector<std::pair<std::string, int>> merged_counterexamples;
+  for (const nlohmann::json& c : all["counterexamples"]) merged_counterexamples.emplace_back(c["family"], c["case"]);
+  EXPECT_EQ(merged_counterexamples,
+            (std::vector<std::pair<std::string, int>>{{"lattice", 20}, {"tangency", 3}, {"zero-radius", 36}}));
 }
 
 TEST(report, refuses_to_merge_reports_of_different_runs_or_a_shard_twice) {

@@ -31,6 +31,16 @@ run_prints_stats_one_figure_a_line)
   cmp -s "$dir/shape" "$dir/want" || fail "wrong stats: $(cat "$dir/out")"
   grep -qx 'steps: 50' "$dir/out" && grep -qx 'circles: 10' "$dir/out" && grep -qx 'frames: 6' "$dir/out" &&
     grep -qx 'threads: 1' "$dir/out" || fail "wrong figures: $(cat "$dir/out")"
+  # Each figure to 3 significant digits: 7 pair lists in 100 steps are one per 14.3 steps.
+  "$circles" run --steps 100 --threads 1 --stats >"$dir/out"
+  grep -qx 'pair lists built: 7 (keys, re-sort and broad phase; one per 14.3 steps)' "$dir/out" ||
+    fail "not 3 significant digits: $(cat "$dir/out")"
+  sed 1d "$dir/out" | grep -oE '[0-9][0-9.]*' | sed 's/\.//; s/^0*//; s/0*$//' | grep -E '.{4}' &&
+    fail "a figure with more than 3 significant digits: $(cat "$dir/out")"
+  # No step, no rate: no "one per 0 steps".
+  "$circles" run --steps 0 --threads 1 --stats >"$dir/out"
+  grep -qx 'pair lists built: 0 (keys, re-sort and broad phase)' "$dir/out" && grep -qx 'pairs tested: 0' "$dir/out" ||
+    fail "a rate of no steps: $(cat "$dir/out")"
   ;;
 run_without_ffmpeg_exits_2_before_stepping)
   mkdir "$dir/bin"
