@@ -143,7 +143,9 @@ std::string summary_line(const Verdict& v) {
   for (const conform::FamilyResult& f : v.families)
     if (const std::uint64_t n = properties::steps_to_decide(f.family); f.checked > 0 && n > o.steps)
       longer += (longer.empty() ? "" : "; ") + std::to_string(n) + " for " + properties::name(f.family) +
-                ", whose boundary comes only at step " + std::to_string(n);
+                (f.family == properties::Family::big_chains
+                     ? std::string(", so that what a program keeps between requests is used")
+                     : ", whose boundary comes only at step " + std::to_string(n));
   if (!longer.empty()) line += " (" + longer + ")";
   line += ", level " + o.level.text() + ", seed " + std::to_string(o.seed) + ", " + properties::name(o.profile) +
           " profile";

@@ -61,7 +61,12 @@ class PageView {
 // has no place in the picture, and the report's lines say what it was.
 bool drawable(const std::array<double, 5>& c) { return std::isfinite(c[0]) && std::isfinite(c[1]) && std::isfinite(c[4]) && c[4] >= 0; }
 
-PageView fit(const CounterexamplePicture& p, double band) {
+// The most circles of a world framed whole: the small families' 8.
+constexpr std::size_t kFramedWhole = 8;
+
+}  // namespace
+
+std::array<long double, 4> framed_box(const CounterexamplePicture& p) {
   long double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
   const auto include = [&](const std::array<double, 5>& c) {
     if (!drawable(c)) return;
@@ -71,10 +76,32 @@ PageView fit(const CounterexamplePicture& p, double band) {
     y0 = std::min(y0, c[1] - r);
     y1 = std::max(y1, c[1] + r);
   };
-  for (const auto& c : p.world) include(c);
+  // A world of the small families is framed whole. A bigger one (a big family's, shrunk or not) is framed around
+  // the circles that decide the case: the circle that differs, the circles it touches (in long double, which is
+  // enough to frame them), and any circle whose velocity it answered with; the others are drawn where they fall.
+  const bool whole = p.world.size() <= kFramedWhole || p.circle >= p.world.size();
+  for (std::size_t k = 0; k < p.world.size(); ++k) {
+    const auto& c = p.world[k];
+    if (!whole && k != p.circle) {
+      const auto& d = p.world[p.circle];
+      const long double dx = static_cast<long double>(c[0]) - d[0], dy = static_cast<long double>(c[1]) - d[1];
+      const long double reach = static_cast<long double>(c[4]) + d[4];
+      const bool touches = dx * dx + dy * dy <= reach * reach * (1 + 1e-9L);
+      const bool taken = p.circle < p.actual.size() && c[2] == p.actual[p.circle][2] && c[3] == p.actual[p.circle][3];
+      if (!touches && !taken) continue;
+    }
+    include(c);
+  }
   if (p.circle < p.expected.size()) include(p.expected[p.circle]);
   if (p.circle < p.actual.size()) include(p.actual[p.circle]);
-  if (p.world.empty()) return PageView(band, 0, 1, 0, 1);
+  if (p.world.empty()) return {0, 1, 0, 1};
+  return {x0, x1, y0, y1};
+}
+
+namespace {
+
+PageView fit(const CounterexamplePicture& p, double band) {
+  const auto [x0, x1, y0, y1] = framed_box(p);
   return PageView(band, x0, x1, y0, y1);
 }
 

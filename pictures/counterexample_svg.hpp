@@ -19,6 +19,7 @@
 #include "properties/boundaries.hpp"
 
 #include <cstddef>
+#include <array>
 #include <string>
 #include <vector>
 
@@ -34,9 +35,15 @@ struct CounterexamplePicture {
   std::vector<std::string> lines;  // the text above the picture, one line each
 };
 
-// The SVG document, 900 × 760 points, taller when the report's lines wrap to more than four. Coordinates are
+// The SVG document, 900 × 760 points, taller when the report's lines wrap to more than four. A world of up to 8
+// circles is framed whole; a bigger one around the circles that decide the case (the circle that differs, its
+// contacts, and any circle whose velocity it answered with). Coordinates are
 // mapped to the picture in long double, so that worlds near DBL_MAX or among the subnormals are drawn too.
 std::string counterexample_svg(const CounterexamplePicture& picture);
+
+// The box of world coordinates the picture frames, {x0, x1, y0, y1}: every drawable circle of a world of up to 8,
+// else the circles that decide the case, with the expected and answered images of the circle that differs.
+std::array<long double, 4> framed_box(const CounterexamplePicture& picture);
 
 // The labels of the expected and answered positions of the circle that differs, "expected (0.5, 0.0)" and
 // "answered (0.5000000000000001, 0.0)", where their markers fall on one another in the picture; none where

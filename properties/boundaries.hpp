@@ -60,12 +60,12 @@ enum class Family {
   // The big families (resolved only): worlds of hundreds to thousands of circles, each built around the place
   // where one kind of optimized step (a broad phase, threads, fixed-size buffers, narrow indices) goes wrong.
   // docs/conform.md ("Big worlds") says which kind each aims at and why it catches it.
-  sizes,               // p − 1, p and p + 1 circles for every power of two p from 16 up to the largest allowed
+  sizes,               // p − 1, p and p + 1 circles for every power of two p from 16 up to the limit, and the limit
   crowds,              // hubs touched by 9 … 257 circles each, the least contact at every rank of the index order
   cell_crowds,         // 5 … 1000 centres in one aligned square of side 2^e, for any e, dense or tangent
   radius_spread,       // radii over seven decimal orders, the big ones last in the index order, across x quartiles
   long_rows,           // one or two rows of tangent circles up to 2048 wide, far out, and their transpose
-  index_bits,          // 2^b + 1 or more circles (b = 8, 16); the least contact i >= 2^b beside a wrong one, i mod 2^b
+  index_bits,          // 2^b + 16 … 2^b + 64 circles (b = 8, 16); the least contact i >= 2^b beside a wrong one, i mod 2^b
   order_borders,       // a contact across every half, quarter and eighth border of the index, x and y orders
   big_chains,          // random worlds of 64 … 512 moving circles, chained 3 steps
 };

@@ -51,6 +51,23 @@ TEST(counterexample_svg, draws_worlds_from_the_subnormals_to_dbl_max_inside_the_
   }
 }
 
+TEST(counterexample_svg, frames_a_big_world_around_the_circles_that_decide_the_case_and_a_small_one_whole) {
+  // Circle 0 touches circle 1 and answered with circle 19's velocity; 17 bystanders lie a million away.
+  Circles w{{0, 0, 1, 0, 1}, {1.5, 0, 2, 0, 1}};
+  for (int k = 0; k < 17; ++k) w.push_back({1e6 + k, 1e6, 0, 0, 1});
+  w.push_back({-3, 0, 7, 7, 0.5});
+  Circles actual = w;
+  actual[0][2] = 7, actual[0][3] = 7;
+  const auto [x0, x1, y0, y1] = framed_box({w, w, actual, 0, Profile::resolved, {}});
+  EXPECT_EQ(x0, -3.5L);
+  EXPECT_EQ(x1, 2.5L);
+  EXPECT_EQ(y0, -1);
+  EXPECT_EQ(y1, 1);
+  // Eight circles or fewer: the whole world, bystanders too.
+  const Circles small(w.begin(), w.begin() + 8);
+  EXPECT_EQ(framed_box({small, small, small, 0, Profile::resolved, {}})[1], 1e6L + 5 + 1);
+}
+
 TEST(counterexample_svg, draws_one_line_for_each_contact_and_the_expected_and_answered_positions_dashed) {
   // Contacts are orange, rgb(95%, 55%, 10%): one line for each touching pair, and one in the legend.
   const auto contact_lines = [](const Circles& w) {

@@ -105,6 +105,8 @@ TEST(docs_claims, every_file_of_the_repository_a_file_names_exists) {
     if (file.extension() == ".png") continue;
     for (const Place& place : places(file, path)) {
       ++named;
+      // cli/version.hpp is written into the build tree at each build (cli/CMakeLists.txt), from git.
+      if (place.what == "cli/version.hpp") continue;
       EXPECT_TRUE(std::filesystem::exists(root / place.what)) << place.where << " names " << place.what
                                                               << ", which is no file of the repository";
     }

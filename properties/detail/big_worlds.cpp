@@ -43,13 +43,15 @@ class Draw {
   rc::Random random_;
 };
 
-// A circle whose vy is unique in its world (the k-th circle made gets vy = k/8 − 256 shifted by a per-world
-// offset), so that taking any contact's velocity other than the right one changes the answer.
+// A circle whose vy differs from that of the 4094 circles made before and after it, and from those 2^8 and 2^16
+// before and after it (the k-th circle made gets vy = (k mod 4095)/8 − 256 shifted by a per-world offset), so
+// that taking any contact's velocity other than the right one changes the answer, at speeds below 6 units a step
+// whatever the size of the world.
 class Builder {
  public:
   explicit Builder(Draw& draw) : draw_(draw), offset_(static_cast<double>(draw.between(-64, 64))) {}
   Circle circle(double x, double y, double r) {
-    const double vy = offset_ + static_cast<double>(made_++) / 8 - 256;
+    const double vy = offset_ + static_cast<double>(made_++ % 4095) / 8 - 256;
     return {x, y, draw_.velocity(), vy, r};
   }
 
@@ -97,12 +99,16 @@ Circles random_world(std::size_t n, Draw& draw) {
   return w;
 }
 
-// sizes: a world that crosses a power of two p: p + 1, p − 1 or p circles.
+// sizes: a world that crosses a power of two p: p + 1, p − 1 or p circles; above the largest p with p + 1 <= max,
+// a last level of max circles itself when max is more, so that the limit is reached.
 Circles sizes(std::uint64_t round, std::size_t max, Draw& draw) {
-  std::size_t levels = 0;  // the powers of two p = 16 · 2^l with p + 1 <= max
-  while ((std::size_t{16} << levels) + 1 <= max) ++levels;
-  const std::size_t p = std::size_t{16} << level(round, levels);
-  const std::size_t side = round < levels ? 1 : static_cast<std::size_t>(round % 3);  // +1 first, then −1, 0, +1, …
+  std::size_t powers = 0;  // the powers of two p = 16 · 2^l with p + 1 <= max
+  while ((std::size_t{16} << powers) + 1 <= max) ++powers;
+  const bool limit = (std::size_t{16} << (powers - 1)) + 1 < max;
+  const std::size_t l = level(round, powers + limit);
+  if (l == powers) return random_world(max, draw);
+  const std::size_t p = std::size_t{16} << l;
+  const std::size_t side = round < powers + limit ? 1 : static_cast<std::size_t>(round % 3);  // +1, then −1, 0, +1, …
   const std::size_t n = std::min(max, side == 1 ? p + 1 : side == 0 ? p - 1 : p);
   return random_world(n, draw);
 }
@@ -223,7 +229,7 @@ Circles long_rows(std::uint64_t round, std::size_t max, Draw& draw) {
   return w;
 }
 
-// index_bits: a world of 2^b + 1 to 2^b + 64 circles, b = 8 or, when the limit allows, 16, apart (sites 8 apart,
+// index_bits: a world of 2^b + 16 to 2^b + 64 circles, b = 8 or, when the limit allows, 16, apart (sites 8 apart,
 // radius 1) but for triples: circle c between circles i >= 2^b and j = i mod 2^b, which differ only in the bits
 // from b up, touching both, with i its least contact (i is on its left). A step that keeps an index in b bits
 // takes j's velocity for i's. The i include 2^b, 2^b + 1 and the last circle.
@@ -233,7 +239,7 @@ Circles index_bits(std::uint64_t round, std::size_t max, Draw& draw) {
   while (fits < kBits.size() && (std::size_t{1} << kBits[fits]) + 64 <= max) ++fits;
   const std::size_t bits = kBits[fits == 0 ? 0 : level(round, fits)];
   const std::size_t low = std::size_t{1} << bits;
-  const std::size_t n = std::min(max, low + 1 + static_cast<std::size_t>(draw.below(64)));
+  const std::size_t n = std::min(max, low + 16 + static_cast<std::size_t>(draw.below(48)));
   const I columns = static_cast<I>(std::ceil(std::sqrt(static_cast<double>(n))));
   const auto site = [columns](std::size_t k) {
     return std::array<double, 2>{static_cast<double>(8 * (static_cast<I>(k) % columns)),
