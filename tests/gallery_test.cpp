@@ -6,6 +6,7 @@
 #include "conform/conform.hpp"
 #include "conform/corpus.hpp"
 #include "tests/gallery.hpp"
+#include "tests/scale_gallery.hpp"
 
 #include <gtest/gtest.h>
 
@@ -61,22 +62,32 @@ TEST(gallery, the_step_with_no_mistake_conforms) {
   EXPECT_EQ(v.outcome, Outcome::conforms) << v.error;
 }
 
-// The gallery_program ctests (tests/CMakeLists.txt) run `circles conform` on gallery_candidate NAME for each
-// name of their own list, which must be this gallery's, name for name: an entry added here and not there would
-// go unchecked through the program.
-TEST(gallery, every_entry_runs_through_the_program_as_a_ctest_of_its_own) {
+// The gallery_program and scale_gallery_program ctests (tests/CMakeLists.txt) run `circles conform` on
+// gallery_candidate NAME for each name of their own list, which must be the gallery's and the scale gallery's,
+// name for name: an entry added here and not there would go unchecked through the program.
+// The names the gallery_ctests(PREFIX …) call of tests/CMakeLists.txt lists.
+std::set<std::string> ctest_names(const std::string& prefix) {
   std::ifstream in(std::filesystem::path(CIRCLES_SOURCE_DIR) / "tests" / "CMakeLists.txt");
   std::stringstream text;
   text << in.rdbuf();
   const std::string cmake = text.str();
   std::smatch list;
-  ASSERT_TRUE(std::regex_search(cmake, list, std::regex(R"(foreach\(gallery_entry ([^)]*)\))")));
+  if (!std::regex_search(cmake, list, std::regex("gallery_ctests\\(" + prefix + R"( \d+ ([^)]*)\))"))) return {};
   std::istringstream names(list[1].str());
-  std::set<std::string> in_cmake, entries;
+  std::set<std::string> in_cmake;
   for (std::string name; names >> name;) in_cmake.insert(name);
+  return in_cmake;
+}
+
+TEST(gallery, every_entry_runs_through_the_program_as_a_ctest_of_its_own) {
+  std::set<std::string> entries;
   for (const GalleryEntry& e : gallery()) entries.insert(e.name);
-  EXPECT_EQ(in_cmake, entries);
+  EXPECT_EQ(ctest_names("gallery_program"), entries);
   EXPECT_EQ(entries.size(), gallery().size()) << "two entries share a name";
+  std::set<std::string> scale;
+  for (const testing::ScaleEntry& e : testing::scale_gallery()) scale.insert(e.name);
+  EXPECT_EQ(ctest_names("scale_gallery_program"), scale);
+  EXPECT_EQ(scale.size(), testing::scale_gallery().size()) << "two scale entries share a name";
 }
 
 // Each counterexample is also saved, and the saved world still catches the mistake. With the environment
