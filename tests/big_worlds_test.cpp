@@ -55,17 +55,10 @@ std::vector<std::vector<std::size_t>> contacts(const Circles& w) {
   return out;
 }
 
-// Circle a before circle b in the resolved order: (px, py, vx, vy, r) exactly, then the index.
-bool precedes(const Circles& w, std::size_t a, std::size_t b) {
-  for (std::size_t f = 0; f < 5; ++f) {
-    if (w[a][f] < w[b][f]) return true;
-    if (w[b][f] < w[a][f]) return false;
-  }
-  return a < b;
-}
-
-std::size_t least(const Circles& w, const std::vector<std::size_t>& of) {
-  return *std::min_element(of.begin(), of.end(), [&](std::size_t a, std::size_t b) { return precedes(w, a, b); });
+// The least of the circles `of` in the resolved order (impl::World::precedes: (px, py, vx, vy, r) exactly, then
+// the index).
+std::size_t least(const circles::impl::World& w, const std::vector<std::size_t>& of) {
+  return *std::min_element(of.begin(), of.end(), [&](std::size_t a, std::size_t b) { return w.precedes(a, b); });
 }
 
 TEST(big_world, every_world_is_bigger_than_a_small_familys_and_within_its_limit_finite_with_r_at_least_0) {
@@ -121,11 +114,12 @@ TEST(crowds, hubs_touched_by_9_to_257_circles_have_their_least_contact_at_the_9t
   for (std::uint64_t round = 0; round < 8; ++round) {
     const Circles w = world(Family::crowds, round);
     const auto c = contacts(w);
+    const circles::impl::World ordered(w);
     bool ninth = false, last = false, first = false;  // the least contact's rank among a hub's contacts
     for (std::size_t k = 0; k < w.size(); ++k) {
       if (c[k].size() < 9) continue;
       counts.insert(c[k].size());
-      const std::size_t l = least(w, c[k]);
+      const std::size_t l = least(ordered, c[k]);
       const auto rank = static_cast<std::size_t>(std::find(c[k].begin(), c[k].end(), l) - c[k].begin());
       ninth = ninth || rank == 8;
       last = last || rank == c[k].size() - 1;
@@ -193,10 +187,11 @@ TEST(long_rows, rows_of_tangent_circles_reach_2048_wide_and_come_transposed) {
 std::size_t high_bit_contacts(const Circles& w, std::size_t bits) {
   const std::size_t low = std::size_t{1} << bits;
   const auto c = contacts(w);
+  const circles::impl::World ordered(w);
   std::size_t found = 0;
   for (std::size_t k = 0; k < w.size(); ++k) {
     if (c[k].empty()) continue;
-    const std::size_t i = least(w, c[k]);
+    const std::size_t i = least(ordered, c[k]);
     found += i >= low && std::binary_search(c[k].begin(), c[k].end(), i % low) && w[i % low][3] != w[i][3];
   }
   return found;
