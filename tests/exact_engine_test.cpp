@@ -837,6 +837,27 @@ TEST(exact_intersect_approximate, decides_clear_pairs_and_leaves_tangency_to_the
   EXPECT_EQ(exact::intersect_approximate(0, 0, 2, 1e-9, 4 + 1e-9, 0, 2, 1e-9), Decision::undecided);
 }
 
+TEST(exact_intersect_approximate, leaves_a_pair_to_the_integers_when_its_squares_underflow_and_round_against_the_exact_sign) {
+  // Approximations exact (e = 0) and no rounding of s, dx, dy: only the squares' underflow is off, by 2^-1074
+  // in all, far beyond any relative bound on sums of squares this small.
+  const auto w = circles::testing::underflowing_intersecting_pair();
+  const double r = w[0][4], x = w[1][0], y = w[1][1];
+  const spec::Q s = spec::exact(r) + spec::exact(r), dx = spec::exact(x), dy = spec::exact(y);
+  ASSERT_TRUE(s * s >= dx * dx + dy * dy);                       // they intersect
+  ASSERT_LT((r + r) * (r + r) - (x * x + y * y), 0.0);            // the squares say they do not
+  const Decision d = exact::intersect_approximate(0, 0, r, 0, x, y, r, 0);
+  EXPECT_NE(d, Decision::disjoint);
+}
+
+TEST(exact_engine, meets_a_pair_whose_squares_underflow_and_round_against_the_exact_sign) {
+  const Circles w = circles::testing::underflowing_intersecting_pair();
+  ExactEngine engine(World(w), EngineOptions{.threads = 1});
+  const spec::Sequence next = spec::resolved_step(exact_of(w));
+  ASSERT_EQ(next[0].v, exact_of(w)[1].v);  // they meet
+  engine.step();
+  EXPECT_EQ(engine.exact(), next);
+}
+
 TEST(exact_intersect_scaled, holds_at_tangency_and_fails_one_unit_past_it_at_2_to_the_120) {
   const Narrow unit = Narrow{1} << 100, m = (Narrow{1} << 20) - 1;
   EXPECT_TRUE(exact::intersect_scaled(5 * m * unit, 3 * m * unit, 4 * m * unit));

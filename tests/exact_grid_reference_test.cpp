@@ -218,6 +218,14 @@ TEST(exact_grid_reference, follows_the_oracle_with_a_huge_radius_and_falls_back_
   EXPECT_GT(follow(exact_of(least), 2).contacts, 0);
 }
 
+TEST(exact_grid_reference, meets_a_pair_whose_squares_underflow_and_round_against_the_exact_sign) {
+  const Circles w = circles::testing::underflowing_intersecting_pair();
+  ASSERT_TRUE(exact_grid_side(w).has_value());
+  const Followed f = follow(exact_of(w), 2);
+  EXPECT_EQ(f.gridded, 2);
+  EXPECT_GT(f.contacts, 0);
+}
+
 TEST(exact_grid_reference, follows_the_oracle_when_every_circle_is_in_one_cell) {
   Circles w;  // radius 1, so h = 4: every centre in [0, 4)², the cell (0, 0)
   for (int k = 0; k < 150; ++k)
