@@ -40,6 +40,10 @@ inline constexpr double kExactGridMinSide = 0x1p-1000;
 // RN is within half an ulp, |x̃ − x| ≤ 2^-53·|x̃| + 2^-1075 (2^-1075: half the subnormal spacing). For
 // m ≥ 2^-969, m·2^-52 is exact and is 2^-53·m + 2^-53·m ≥ 2^-53·m + 2^-1022; below, 2^-53·m + 2^-1075 <
 // 2^-1022 + 2^-1075 < 2^-1021.
+// The floor keeps each circle's own bound; the filter needs only the pair's sum E = e_a + e_b, which holds
+// without it: two circles with m < 2^-1021 have |s|, |dx|, |dy| < 2^-1019, whose squares round to 0, so no E
+// lets the filter decide them; beside one with m ≥ 2^-1021, its RN(m·2^-52) ≥ 2^-52·m − 2^-1075 ≥ 2^-53·m +
+// 2^-1075 bounds its own error (2^-53·m) and the other's (2^-1075, half the spacing below 2^-1021) together.
 inline constexpr double kNearestRelative = 0x1p-52;
 inline constexpr double kNearestFloor = 0x1p-1021;
 

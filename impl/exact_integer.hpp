@@ -73,6 +73,11 @@ int intersect_filter(double s, double dx, double dy) noexcept;
 // its term with the roundings of the bound itself to spare, plus 2^-1069 = 64η for products that underflow
 // (η = 2^-1075; at most eight of them, each off by η). A non-finite value anywhere makes the bound +∞ or NaN:
 // undecided. Branch-free, like impl::sign_filter.
+// The relative term has more than twice what it needs, so 4u would hold too: with p = RN(s²), q = RN(RN(dx²) +
+// RN(dy²)), the roundings move F by at most 3u·p + 4u·q + O(u²)·m (s's twice and p's own; dx's twice, the
+// square's and the sum's), and a wrong sign needs |p − q| ≤ |F − (p − q)|·(1 + 3u), at most 4u·m(1 + O(u)) plus
+// the E terms, so 3u·p + 4u·q = 3.5u·(p + q) + 0.5u·(q − p) ≤ (3.5u + O(u²))·m plus 0.5u of the E terms, which
+// their factor 4, twice the 2 + 2u they need, covers.
 inline constexpr double kApproximateRelative = 0x1p-50;
 inline constexpr double kApproximateSpread = 4;
 inline constexpr double kApproximateAbsolute = 0x1p-1069;

@@ -104,7 +104,12 @@ inline double skin_for(std::uint64_t horizon, double vmax, double reach, double 
 // Which of these a test can reach (tests/pair_list_test.cpp; each tried by lowering it):
 //   kGapRelative  the root's rounding is u of the distance, not of the gap: without it first_step answers
 //                 late for a gap of a whole number of steps that is small beside the distance (its property
-//                 test fails).
+//                 test fails). 4u would hold too, with kQuotientShrink: below the overflow RN(root·(1 − 4u)) ≤
+//                 D·(1 + u)^4·(1 − 4u) + 2^-536 ≤ D + 2^-536; above it norm_upper's five roundings put root at
+//                 most 13u/4 above |(dx, dy)| (2^-50 bounds the other side), 17u/4 above D, so RN(root·(1 − 4u))
+//                 ≤ D·(1 + 5u/4 + O(u²)); the sum's side takes 2u·(r_a + r_b) off, so the gap is over by at
+//                 most 5u/4·D − 2u·(r_a + r_b) ≤ 5u/4·g, which the quotient's 2^-48 = 32u covers with the
+//                 three roundings after it.
 //   kQuotientShrink  covered twice over: kGapRelative takes 2^-49·(root + sum) off, of which the root's own
 //                 rounding needs at most 4u·root (norm_upper's 2^-50), leaving at least 12u of the gap, and
 //                 the subtraction and the quotient round by u of the gap each: a quotient left unshrunk is
