@@ -2,8 +2,8 @@
 // (spec::resolved_step), as rationals and rounded, at every step: random scenes large enough that the grid
 // prunes pairs (and so could miss one), exact tangencies at rational coordinates whose nearest doubles round
 // across a cell border, every boundary family of the property suite (properties/boundaries.hpp), circles on
-// the cells' borders, a huge radius, one cell for all, the empty world and one circle, and overflow reported
-// for the same step, circle and field.
+// the cells' borders, a pair whose squares underflow against the exact sign, a huge radius, one cell for
+// all, the empty world and one circle, and overflow reported for the same step, circle and field.
 #include "impl/exact_grid_reference.hpp"
 
 #include <gtest/gtest.h>
