@@ -18,9 +18,7 @@ inline std::vector<std::array<double, 5>> nearest(const spec::Sequence& w) {
 }
 
 inline spec::Sequence exact_of(const std::vector<std::array<double, 5>>& w) {
-  spec::Sequence out;
-  for (std::size_t k = 0; k < w.size(); ++k) out.push_back(spec::from_doubles(w[k], k, spec::Radii::non_negative));
-  return out;
+  return spec::from_doubles(w, spec::Radii::non_negative);
 }
 
 }  // namespace circles::testing
