@@ -169,7 +169,7 @@ TEST(exact_engine, takes_the_contact_of_least_centre_when_two_centres_differ_bel
 TEST(exact_engine, follows_the_oracle_on_the_bundled_scene_and_runs_it_for_10000_steps) {
   const spec::Sequence w0 = formats::default_scene().circles;
   ExactEngine engine(w0, EngineOptions{.threads = 1});
-  BasicEngine<ExactArithmetic> doubles(World(nearest(w0)), EngineOptions{.threads = 1});
+  BasicEngine<RoundedArithmetic> doubles(World(nearest(w0)), EngineOptions{.threads = 1});
   spec::Sequence oracle = w0;
   constexpr int kOracleSteps = 600;  // the cradle, the glancing pair and the incomparable triple all act by then
   for (int t = 1; t <= kOracleSteps; ++t) {
@@ -335,7 +335,7 @@ Circles exact_move_scene(std::size_t n, double coverage = 0.1) {
 
 TEST(exact_engine, equals_the_double_engine_where_every_move_is_exact_on_every_thread_count) {
   const Circles w = exact_move_scene(12000);  // above kParallelFrom: several chunks on 2 and 4 threads
-  BasicEngine<ExactArithmetic> doubles(World(w), EngineOptions{.threads = 1});
+  BasicEngine<RoundedArithmetic> doubles(World(w), EngineOptions{.threads = 1});
   std::vector<ExactEngine> engines;
   for (const unsigned threads : {1u, 2u, 4u}) engines.emplace_back(World(w), EngineOptions{.threads = threads});
   for (int t = 1; t <= 30; ++t) {
