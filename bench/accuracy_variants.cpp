@@ -71,15 +71,9 @@ class ExactVariant final : public Variant {
   impl::ExactEngine engine_;
 };
 
-spec::Sequence sequence_of(const Doubles& scene) {
-  spec::Sequence w;
-  for (std::size_t k = 0; k < scene.size(); ++k) w.push_back(spec::from_doubles(scene[k], k, spec::Radii::non_negative));
-  return w;
-}
-
 class OracleVariant final : public Variant {
  public:
-  explicit OracleVariant(const Doubles& scene) : w_(sequence_of(scene)) {}
+  explicit OracleVariant(const Doubles& scene) : w_(spec::from_doubles(scene, spec::Radii::non_negative)) {}
   void step() override { w_ = spec::resolved_step(w_); }
   Decisions decisions() const override { return exact_decisions(w_); }
   std::variant<impl::World, spec::Sequence> state() const override { return w_; }
@@ -139,7 +133,7 @@ std::string_view id_of(Kind kind) {
     case Kind::naive_sqrt: return "naive_sqrt";
     case Kind::naive_squares: return "naive_squares";
     case Kind::exact_decisions: return "exact_decisions";
-    case Kind::engine: return "engine";
+    case Kind::double_engine: return "double_engine";
     case Kind::exact: return "exact";
     case Kind::oracle: return "oracle";
   }
@@ -158,7 +152,7 @@ std::unique_ptr<Variant> make_variant(Kind kind, const Doubles& scene) {
     case Kind::naive_sqrt: return std::make_unique<EngineVariant<impl::NaiveSqrtArithmetic>>(scene);
     case Kind::naive_squares: return std::make_unique<EngineVariant<impl::NaiveArithmetic>>(scene);
     case Kind::exact_decisions: return std::make_unique<EngineVariant<impl::ExactDecisionArithmetic>>(scene);
-    case Kind::engine: return std::make_unique<EngineVariant<impl::ExactArithmetic>>(scene);
+    case Kind::double_engine: return std::make_unique<EngineVariant<impl::RoundedArithmetic>>(scene);
     case Kind::exact: return std::make_unique<ExactVariant>(scene);
     case Kind::oracle: return std::make_unique<OracleVariant>(scene);
   }

@@ -26,11 +26,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::vector<spec::Circle> exact_circles(const Circles& w) {
-  std::vector<spec::Circle> out;
-  for (std::size_t k = 0; k < w.size(); ++k) out.push_back(spec::from_doubles(w[k], k, spec::Radii::non_negative));
-  return out;
-}
+std::vector<spec::Circle> exact_circles(const Circles& w) { return spec::from_doubles(w, spec::Radii::non_negative); }
 
 // [[a, b, c, d, e], ...] with each value written by `write`.
 template <class Rows, class Write>

@@ -14,10 +14,7 @@ namespace circles::conform {
 StepOverflow::StepOverflow(std::uint64_t s, std::size_t i, spec::Field f)
     : std::overflow_error("step " + std::to_string(s) + ", " + overflow_reason(i, f)), step(s), index(i), field(f) {}
 
-std::string overflow_reason(std::size_t index, spec::Field field) {
-  return "circle " + std::to_string(index) + ", field " + spec::name(field) +
-         ": the position p + v/60 overflows to infinity";
-}
+std::string overflow_reason(std::size_t index, spec::Field field) { return impl::overflow_reason(index, spec::name(field)); }
 
 void Stepper::step() {
   if (const auto overflow = advance()) throw StepOverflow(steps_ + 1, overflow->index, overflow->field);
@@ -33,7 +30,7 @@ formats::CircleSource Stepper::source() const {
 
 namespace {
 
-// An engine of impl/ (impl::Engine or impl::ExactEngine): its step, with PositionOverflow as an Overflow.
+// An engine of impl/ (impl::DoubleEngine or impl::ExactEngine): its step, with PositionOverflow as an Overflow.
 template <class E>
 class ImplStepper final : public Stepper {
  public:
@@ -93,10 +90,7 @@ class OracleStepper final : public Stepper {
 // spec::resolved_step on the exact sequence from w_0, each world rounded: the reference of the exact engines.
 class ExactOracleStepper final : public Stepper {
  public:
-  explicit ExactOracleStepper(const Circles& world) {
-    for (std::size_t k = 0; k < world.size(); ++k)
-      world_.push_back(spec::from_doubles(world[k], k, spec::Radii::non_negative));
-  }
+  explicit ExactOracleStepper(const Circles& world) : world_(spec::from_doubles(world, spec::Radii::non_negative)) {}
   Circles circles() const override {
     Circles out;
     for (const spec::Circle& c : world_) out.push_back(spec::nearest_doubles(c));
@@ -126,7 +120,7 @@ std::unique_ptr<Stepper> start(const Circles& world, unsigned threads) {
 constexpr std::array kEngines{
     EngineEntry{"double",
                 "the double engine of impl/: exact decisions, correctly rounded positions, a broad phase, threads",
-                true, false, &start<ImplStepper<impl::Engine>>},
+                true, false, &start<ImplStepper<impl::DoubleEngine>>},
     EngineEntry{"exact",
                 "the exact engine of impl/: the oracle's exact sequence in integers, each output rounded; a broad "
                 "phase, threads",
@@ -139,7 +133,7 @@ constexpr std::array kEngines{
 
 std::span<const EngineEntry> engines() { return kEngines; }
 
-unsigned max_threads() { return impl::Engine::kMaxThreads; }
+unsigned max_threads() { return impl::DoubleEngine::kMaxThreads; }
 
 std::string engine_names() {
   std::string names;

@@ -1,9 +1,9 @@
 // The arithmetic of an engine: its intersect test and its position update, as a policy type.
 //
-//   ExactArithmetic  intersect_exact (exact for every pair of finite doubles) and advance_rounded
-//                    (RN(p + v/60), correctly rounded): the resolved oracle step, bit for bit.
-//   NaiveArithmetic  intersect_naive ((ra + rb)² ≥ dx² + dy² in doubles) and advance_naive (p + v·RN(1/60)):
-//                    what a plain engine does; it differs from the oracle near tangency and in the last bits.
+//   RoundedArithmetic  intersect_exact (exact for every pair of finite doubles) and advance_rounded
+//                      (RN(p + v/60), correctly rounded): the resolved oracle step, bit for bit.
+//   NaiveArithmetic    intersect_naive ((ra + rb)² ≥ dx² + dy² in doubles) and advance_naive (p + v·RN(1/60)):
+//                      what a plain engine does; it differs from the oracle near tangency and in the last bits.
 //
 // Three more, for the accuracy benchmark only (bench/accuracy.cpp, docs/accuracy.md): the ways an engine is
 // commonly written, run inside the same engine so that only the arithmetic differs. None is conformant.
@@ -34,8 +34,7 @@ namespace circles::impl {
 //          call a pair touching: 0 for the exact test; for the naive tests a margin far above their few
 //          roundings (2^-48 for doubles, 2^-20 for floats), so the list offers them every pair they would
 //          test in a plain broad phase. Only the exact test is proven; the others are yardsticks.
-struct ExactArithmetic {
-  static constexpr const char* name = "exact";
+struct RoundedArithmetic {
   static constexpr double drift = kDriftBound;
   static constexpr double slack = 0;
   static bool intersect(double ax, double ay, double ar, double bx, double by, double br) {
@@ -45,7 +44,6 @@ struct ExactArithmetic {
 };
 
 struct NaiveArithmetic {
-  static constexpr const char* name = "naive";
   static constexpr double drift = kDriftBound;
   static constexpr double slack = 0x1p-48;
   static bool intersect(double ax, double ay, double ar, double bx, double by, double br) {
@@ -55,7 +53,6 @@ struct NaiveArithmetic {
 };
 
 struct NaiveSqrtArithmetic {
-  static constexpr const char* name = "naive sqrt";
   static constexpr double drift = kDriftBound;
   static constexpr double slack = 0x1p-48;
   static bool intersect(double ax, double ay, double ar, double bx, double by, double br) {
@@ -67,7 +64,6 @@ struct NaiveSqrtArithmetic {
 };
 
 struct FloatNaiveArithmetic {
-  static constexpr const char* name = "float naive";
   static constexpr double drift = 0x1.6a1p-24;
   static constexpr double slack = 0x1p-20;
   static bool intersect(double ax, double ay, double ar, double bx, double by, double br) {
@@ -84,7 +80,6 @@ struct FloatNaiveArithmetic {
 };
 
 struct ExactDecisionArithmetic {
-  static constexpr const char* name = "exact decisions";
   static constexpr double drift = kDriftBound;
   static constexpr double slack = 0;
   static bool intersect(double ax, double ay, double ar, double bx, double by, double br) {

@@ -149,8 +149,6 @@ class CellGrid {
            inside(cell_of_y(yhi, 0));
   }
 
-  double base_cell() const noexcept { return base_cell_; }
-
  private:
   static constexpr double kLastCell = static_cast<double>(kCells - 1);
   static constexpr double kWidthSpread = 4.0;
@@ -327,7 +325,7 @@ struct CandidatePair {
   friend auto operator<=>(const CandidatePair&, const CandidatePair&) = default;
 };
 
-// The debug validator, all pairs: true when `candidates` holds every pair {i, j}, i ≠ j, that intersects
+// The test hooks' check, all pairs: true when `candidates` holds every pair {i, j}, i ≠ j, that intersects
 // exactly (impl::intersect_exact). Pairs may appear in either orientation. O(n²): for tests only.
 bool candidates_cover_all_intersecting_pairs(std::span<const double> px, std::span<const double> py,
                                              std::span<const double> r, std::span<const CandidatePair> candidates);

@@ -25,12 +25,6 @@ namespace {
 // DBL_MAX), so steps update in place without checking for overflow.
 constexpr double kOverflowFreeReach = 0x1p1023;
 
-template <class T>
-void gather(std::vector<T>& to, const std::vector<T>& from, std::span<const std::uint32_t> permutation,
-            std::size_t begin, std::size_t end) {
-  for (std::size_t t = begin; t < end; ++t) to[t] = from[permutation[t]];
-}
-
 }  // namespace
 
 // ── World ─────────────────────────────────────────────────────────────────────────────────────────────
@@ -71,9 +65,13 @@ bool World::precedes(std::size_t a, std::size_t b) const noexcept {
   return a < b;
 }
 
+std::string overflow_reason(std::size_t index, std::string_view field) {
+  return "circle " + std::to_string(index) + ", field " + std::string(field) +
+         ": the position p + v/60 overflows to infinity";
+}
+
 PositionOverflow::PositionOverflow(std::uint64_t s, std::size_t i, const char* f)
-    : std::overflow_error("step " + std::to_string(s) + ", circle " + std::to_string(i) + ", field " + f +
-                          ": the position p + v/60 overflows to infinity"),
+    : std::overflow_error("step " + std::to_string(s) + ", " + overflow_reason(i, f)),
       step(s),
       index(i),
       field(f) {}
@@ -82,15 +80,12 @@ PositionOverflow::PositionOverflow(std::uint64_t s, std::size_t i, const char* f
 
 template <class A>
 BasicEngine<A>::BasicEngine(World w, EngineOptions options)
-    : options_(options), threads_(resolve_threads(options.threads, kMaxThreads)) {
+    : options_(options), threads_(resolve_threads(options.threads, kMaxThreads)), layout_(w.size()) {
   now_.px = std::move(w.px_);
   now_.py = std::move(w.py_);
   now_.vx = std::move(w.vx_);
   now_.vy = std::move(w.vy_);
   now_.r = std::move(w.r_);
-  now_.id.resize(now_.px.size());
-  std::iota(now_.id.begin(), now_.id.end(), std::uint32_t{0});
-  least_ = now_.id;  // every slot its own least contact until a step finds one
 }
 
 template <class A>
@@ -99,7 +94,7 @@ World BasicEngine<A>::world() const {
   const std::size_t n = now_.px.size();
   for (std::vector<double>* field : {&w.px_, &w.py_, &w.vx_, &w.vy_, &w.r_}) field->resize(n);
   for (std::size_t t = 0; t < n; ++t) {
-    const std::uint32_t k = now_.id[t];
+    const std::uint32_t k = layout_.id()[t];
     w.px_[k] = now_.px[t];
     w.py_[k] = now_.py[t];
     w.vx_[k] = now_.vx[t];
@@ -111,8 +106,9 @@ World BasicEngine<A>::world() const {
 
 template <class A>
 std::vector<std::uint32_t> BasicEngine<A>::slots() const {
-  std::vector<std::uint32_t> slot(now_.id.size());
-  for (std::size_t t = 0; t < slot.size(); ++t) slot[now_.id[t]] = static_cast<std::uint32_t>(t);
+  const std::span<const std::uint32_t> id = layout_.id();
+  std::vector<std::uint32_t> slot(id.size());
+  for (std::size_t t = 0; t < slot.size(); ++t) slot[id[t]] = static_cast<std::uint32_t>(t);
   return slot;
 }
 
@@ -134,43 +130,34 @@ bool BasicEngine<A>::precedes(std::size_t a, std::size_t b) const noexcept {
     if (x < y) return true;
     if (y < x) return false;
   }
-  return now_.id[a] < now_.id[b];
+  return layout_.id()[a] < layout_.id()[b];
 }
 
 template <class A>
 void BasicEngine<A>::step() {
-  if (stats_.steps == rebuild_at_) rebuild();
-  std::size_t contacts = 0, tested = 0;
-  const std::uint64_t j = stats_.steps - built_at_;  // this step's place in the list's horizon
-  if (!pairs_.quiet(j)) {
-    // The arrays' addresses as locals: the loop's stores (least, touched) then cannot make the compiler
-    // reload them for every pair.
-    const double *px = now_.px.data(), *py = now_.py.data(), *r = now_.r.data();
-    contacts = pairs_.least_contacts(
-        j, threads_, least_, touched_, tested,
-        [px, py, r](std::size_t a, std::size_t b) { return A::intersect(px[a], py[a], r[a], px[b], py[b], r[b]); },
-        [this](std::size_t a, std::size_t b) { return precedes(a, b); }, PrefetchCircles{px, py, r});
-  } else {
-    ++stats_.quiet_steps;
-    for (std::vector<std::uint32_t>& list : touched_) list.clear();
-  }
-  advance();
-  ++stats_.steps;
-  stats_.pairs_tested += tested;
-  stats_.contacts += contacts;
-  stats_.lonely_circle_steps += pairs_.lonely();
+  layout_.step(
+      stats_, threads_, [this] { rebuild(); },
+      [this] {
+        // The arrays' addresses as locals: the loop's stores (least, touched) then cannot make the compiler
+        // reload them for every pair.
+        const double *px = now_.px.data(), *py = now_.py.data(), *r = now_.r.data();
+        return PairTest{
+            [px, py, r](std::size_t a, std::size_t b) { return A::intersect(px[a], py[a], r[a], px[b], py[b], r[b]); },
+            [this](std::size_t a, std::size_t b) { return precedes(a, b); }, PrefetchCircles{px, py, r}};
+      },
+      [this] { advance(); });
 }
 
 template <class A>
 void BasicEngine<A>::advance() {
   const std::size_t n = now_.px.size();
   const std::size_t chunks = chunk_count(n, threads_);
-  touched_.resize(chunks);
   moves_.resize(chunks);
+  const CellLayout::Found found = layout_.found(chunks);
   // Every new velocity first, read from world t (a slot's least contact may be another chunk's slot).
   for_each_chunk(chunks, threads_, [&](std::size_t c) {
     moves_[c].clear();
-    for (const std::uint32_t t : touched_[c]) moves_[c].push_back({t, now_.vx[least_[t]], now_.vy[least_[t]]});
+    for (const std::uint32_t t : found.touched[c]) moves_[c].push_back({t, now_.vx[found.least[t]], now_.vy[found.least[t]]});
   });
   if (!overflow_free_) {
     backup_px_ = now_.px;
@@ -184,7 +171,7 @@ void BasicEngine<A>::advance() {
     for (Move& m : moves_[c]) {
       std::swap(now_.vx[m.slot], m.vx);
       std::swap(now_.vy[m.slot], m.vy);
-      least_[m.slot] = m.slot;
+      found.least[m.slot] = m.slot;
     }
     const std::size_t b = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1);
     A::advance(std::span<double>(now_.px).subspan(b, e - b), std::span<const double>(now_.vx).subspan(b, e - b));
@@ -193,7 +180,7 @@ void BasicEngine<A>::advance() {
     // Inputs are finite, so the update gives ±inf only on an overflow, never NaN.
     for (std::size_t t = b; t < e; ++t)
       if (!std::isfinite(now_.px[t]) || !std::isfinite(now_.py[t])) [[unlikely]]
-        fault[c] = std::min(fault[c], 2 * std::uint64_t{now_.id[t]} + (std::isfinite(now_.px[t]) ? 1 : 0));
+        fault[c] = std::min(fault[c], 2 * std::uint64_t{layout_.id()[t]} + (std::isfinite(now_.px[t]) ? 1 : 0));
   });
   const std::uint64_t first = *std::min_element(fault.begin(), fault.end());
   if (first == kNoFault) return;
@@ -202,7 +189,7 @@ void BasicEngine<A>::advance() {
   now_.py.swap(backup_py_);
   for (std::size_t c = 0; c < chunks; ++c)
     for (const Move& m : moves_[c]) {
-      least_[m.slot] = m.slot;
+      found.least[m.slot] = m.slot;
       now_.vx[m.slot] = m.vx;
       now_.vy[m.slot] = m.vy;
     }
@@ -232,7 +219,7 @@ void BasicEngine<A>::rebuild() {
     reach = std::max(reach, p);
     radius = std::max(radius, r);
   }
-  std::uint64_t horizon = !options_.keep_pairs ? 0 : options_.horizon > 0 ? options_.horizon : schedule_.horizon();
+  std::uint64_t horizon = layout_.horizon(options_);
   // A naive test may call a pair touching slightly beyond the exact relation: its slack (impl/arithmetic.hpp)
   // widens every radius by `slack` for the list, on top of the skin.
   const double slack = A::slack * reach + A::slack * radius;
@@ -243,7 +230,7 @@ void BasicEngine<A>::rebuild() {
     horizon = 0;
     step = 0;
     pad = slack;
-    schedule_.collapse();
+    layout_.collapse();
   }
   // Until the list's last step is taken, every circle moves at most skin_for(H + 1) from world t: below
   // 2^1023 − reach, no position can overflow (a rounded |p| ≤ 2^1023·(1 + 2^-52) < DBL_MAX), and steps
@@ -258,36 +245,9 @@ void BasicEngine<A>::rebuild() {
     });
   };
   widened(inflated_, pad);
-  if (horizon != planned_horizon_) {
-    grid_.plan(now_.px, now_.py, inflated_);
-    planned_horizon_ = horizon;
-  }
-  next_key_.resize(n);
-  locate(grid_, threads_, now_.px, now_.py, inflated_, next_key_);
-  if (now_.key.size() != n) now_.key.clear();  // the first layout: no previous order to guide the sort
-  const bool sorted = order_.sort(next_key_, now_.key, permutation_, threads_);
-  std::swap(now_.key, next_key_);
-  if (!sorted) {
-    // One gather of every field into cell order. least_ is the identity between steps, so it stays.
-    scratch_.resize(n);
-    scratch_id_.resize(n);
-    next_key_.resize(n);
-    for (std::vector<double>* field : {&now_.px, &now_.py, &now_.vx, &now_.vy, &now_.r, &inflated_}) {
-      for_each_chunk(chunks, threads_, [&](std::size_t c) {
-        gather(scratch_, *field, permutation_, chunk_begin(n, chunks, c), chunk_begin(n, chunks, c + 1));
-      });
-      field->swap(scratch_);
-    }
-    for_each_chunk(chunks, threads_, [&](std::size_t c) {
-      const std::size_t b = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1);
-      gather(scratch_id_, now_.id, permutation_, b, e);
-      gather(next_key_, now_.key, permutation_, b, e);
-    });
-    std::swap(now_.id, scratch_id_);
-    std::swap(now_.key, next_key_);
-  }
-  index_levels(now_.key, now_.level_begin, now_.levels);
-  const CellView view{now_.key, now_.px, now_.py, inflated_, now_.levels, now_.level_begin};
+  // The slots in cell order, every column gathered with them.
+  layout_.arrange(threads_, horizon, now_.px, now_.py, inflated_,
+                  impl::Columns<double>{scratch_, {&now_.px, &now_.py, &now_.vx, &now_.vy, &now_.r, &inflated_}});
   // Each pair's first step from its gap (impl/pair_list.hpp), on the radii widened by the slack alone.
   // (With no slack, the exact arithmetic's, the padded radii are the radii: no copy.)
   if (slack > 0) widened(padded_, slack);
@@ -296,25 +256,18 @@ void BasicEngine<A>::rebuild() {
   // from step 0.
   const double *px = now_.px.data(), *py = now_.py.data(), *r = slack > 0 ? padded_.data() : now_.r.data(),
                *ri = inflated_.data();
-  pairs_.build(grid_, view, threads_, horizon, Lister{px, py, r, ri, step, horizon});
-  built_at_ = stats_.steps;
-  stats_.pairs_listed += pairs_.size();
-  ++stats_.rebuilds;
-  if (options_.keep_pairs && options_.horizon == 0) schedule_.update(pairs_.tests(), n);
-  rebuild_at_ = stats_.steps + horizon + 1;
+  layout_.list(stats_, options_, threads_, horizon, now_.px, now_.py, inflated_, Lister{px, py, r, ri, step, horizon});
 }
 
 template <class A>
 std::vector<CandidatePair> BasicEngine<A>::candidates() const {
-  if (stats_.steps == rebuild_at_) {
-    BasicEngine copy = *this;
-    copy.rebuild();
-    return copy.candidates();
-  }
-  return listed_pairs(pairs_, now_.id);
+  if (!layout_.due(stats_.steps)) return layout_.listed();
+  BasicEngine copy = *this;
+  copy.rebuild();
+  return copy.layout_.listed();
 }
 
-template class BasicEngine<ExactArithmetic>;
+template class BasicEngine<RoundedArithmetic>;
 template class BasicEngine<NaiveArithmetic>;
 template class BasicEngine<NaiveSqrtArithmetic>;
 template class BasicEngine<FloatNaiveArithmetic>;

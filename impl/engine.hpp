@@ -1,7 +1,7 @@
 // The double engines: the resolved step of the oracle (spec/equations.hpp, docs/math.md) over doubles.
 //
 //   Invariant: for every World w whose next positions are finite,
-//              Engine(w).step() leaves world() equal, by value (−0 == +0), to spec::resolved_step_rounded(w):
+//              DoubleEngine(w).step() leaves world() equal, by value (−0 == +0), to spec::resolved_step_rounded(w):
 //              circle k takes the velocity of the least circle it intersects exactly (least in lexicographic
 //              order on (px, py, vx, vy, r), then by index), or keeps its own, and then
 //              p ← RN(p + v_new/60) per coordinate. Every circle reads the old world. The result does not depend
@@ -11,14 +11,13 @@
 // pairs that can meet within the horizon, each from its first step (impl/pair_list.hpp) → the arithmetic's
 // intersect test → the
 // lexicographic minimum (double < and == are exact; −0 == +0 as for the oracle's rationals) → the arithmetic's
-// update. ExactArithmetic (intersect_exact, advance_rounded) makes the invariant hold; NaiveArithmetic
+// update. RoundedArithmetic (intersect_exact, advance_rounded) makes the invariant hold; NaiveArithmetic
 // (intersect_naive, advance_naive) is the same engine without exactness, to measure what exactness costs.
 // docs/engine.md describes the layout, the step and the proofs of the broad phase and the pair lists.
 #pragma once
 
 #include "impl/arithmetic.hpp"
-#include "impl/broad_phase.hpp"
-#include "impl/pair_list.hpp"
+#include "impl/cell_layout.hpp"
 #include "spec/outside_c.hpp"
 
 #include <array>
@@ -27,6 +26,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -66,24 +66,16 @@ class World {
 // A step whose position overflows: at step `step` (the step that would make world `step` from world
 // `step` − 1), circle `index`'s coordinate `field` ("px" or "py") would become ±infinity. The world is left
 // as it was before that step.
+// "circle <index>, field <field>: the position p + v/60 overflows to infinity": the reason every overflow of a
+// position is reported with, by the engines and by `circles conform`'s steppers.
+std::string overflow_reason(std::size_t index, std::string_view field);
+
 class PositionOverflow : public std::overflow_error {
  public:
   PositionOverflow(std::uint64_t step, std::size_t index, const char* field);
   std::uint64_t step;
   std::size_t index;
   const char* field;
-};
-
-struct EngineOptions {
-  // Worker threads; 0 means one per core (std::thread::hardware_concurrency()). Results are the same bits
-  // for every value.
-  unsigned threads = 0;
-  // Keep candidate pairs across steps (impl/pair_list.hpp: a list with a proven skin, rebuilt when its
-  // horizon ends); false builds a list for every step alone. Results are the same bits either way.
-  bool keep_pairs = true;
-  // The horizon of every list, in steps, instead of HorizonSchedule's choice (0 means that choice); for tests
-  // and benchmarks. With keep_pairs false it is ignored. Results are the same bits for every value.
-  std::uint64_t horizon = 0;
 };
 
 // The engine: circles kept in cell order (impl/broad_phase.hpp), a list of the pairs that can meet before
@@ -114,19 +106,15 @@ class BasicEngine {
   // One resolved step. Throws PositionOverflow (world unchanged) when a position would become infinite.
   void step();
 
-  // For the debug validator: the pairs {i, j}, i < j (circle indices), that the next step's narrow phase
-  // would test, once each. O(n + pairs).
+  // A test hook, which no step calls: the pairs {i, j}, i < j (circle indices), that the next step's narrow
+  // phase would test, once each (the tests hold it to candidates_cover_all_intersecting_pairs). O(n + pairs).
   std::vector<CandidatePair> candidates() const;
 
   static constexpr unsigned kMaxThreads = 256;
 
  private:
-  struct Layout {  // circles in cell order; slot t holds circle id[t]
+  struct Circles {  // the circles by slot (CellLayout: slot t holds circle layout_.id()[t])
     std::vector<double> px, py, vx, vy, r;
-    std::vector<std::uint32_t> id;
-    std::vector<CellKey> key;      // by the inflated radii of the last rebuild
-    std::vector<unsigned> levels;  // the levels that hold a circle, ascending, the global level excluded
-    std::array<std::size_t, CellGrid::kLevels + 1> level_begin{};  // level L: [level_begin[L], level_begin[L + 1])
   };
   // A new velocity for a slot, kept until every new velocity of the step is known (all read world t).
   struct Move {
@@ -141,27 +129,18 @@ class BasicEngine {
   EngineOptions options_;
   unsigned threads_ = 1;
   EngineStats stats_;
-  std::uint64_t rebuild_at_ = 0;  // the step whose world gets the next list
-  std::uint64_t built_at_ = 0;    // the step whose world got the current one
-  bool overflow_free_ = false;    // proven at the rebuild: no position can overflow before rebuild_at_
-  HorizonSchedule schedule_;
-  std::uint64_t planned_horizon_ = ~std::uint64_t{0};  // the horizon the grid was planned for
-  CellGrid grid_;
-  CellOrder order_;
-  Layout now_;
-  PairList pairs_;
-  // Scratch: each slot's least contact (itself if none), the slots touched per chunk and their moves, the
-  // sorting permutation, the gather's targets, the inflated radii.
-  std::vector<std::uint32_t> least_, permutation_, scratch_id_;
-  std::vector<std::vector<std::uint32_t>> touched_;
+  bool overflow_free_ = false;  // proven at the rebuild: no position can overflow before the next one
+  CellLayout layout_;
+  Circles now_;
+  // Scratch: the slots touched per chunk and their moves, the gather's target, the inflated and padded radii,
+  // the positions of world t while a step may overflow.
   std::vector<std::vector<Move>> moves_;
   std::vector<double> scratch_, inflated_, padded_, backup_px_, backup_py_;
-  std::vector<CellKey> next_key_;
 };
 
-using Engine = BasicEngine<ExactArithmetic>;
+using DoubleEngine = BasicEngine<RoundedArithmetic>;
 using NaiveEngine = BasicEngine<NaiveArithmetic>;
-extern template class BasicEngine<ExactArithmetic>;
+extern template class BasicEngine<RoundedArithmetic>;
 extern template class BasicEngine<NaiveArithmetic>;
 // The accuracy benchmark's baselines (impl/arithmetic.hpp, docs/accuracy.md); not conformant.
 extern template class BasicEngine<NaiveSqrtArithmetic>;
@@ -169,7 +148,7 @@ extern template class BasicEngine<FloatNaiveArithmetic>;
 extern template class BasicEngine<ExactDecisionArithmetic>;
 
 // The reference engine for tests: the exact step with every pair tested (no broad phase). O(n²).
-// Throws PositionOverflow (step 1) like Engine::step.
+// Throws PositionOverflow (step 1) like DoubleEngine::step.
 World step_all_pairs(const World& w);
 
 // Circle a's least contact so far (least[a] == a while it has none) after contact b is offered: the least by
@@ -180,7 +159,7 @@ inline void offer_contact(const World& w, std::vector<std::size_t>& least, std::
 
 // The end of the references' step, from each circle's least contact (itself when it has none): v ← v[least],
 // then p ← advance_rounded(p, v). Throws PositionOverflow (step 1) for the first circle, then px before py,
-// whose position overflows, like Engine::step.
+// whose position overflows, like DoubleEngine::step.
 World step_from_contacts(const World& w, std::span<const std::size_t> least);
 
 }  // namespace circles::impl

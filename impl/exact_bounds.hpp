@@ -54,4 +54,34 @@ inline double walked(double bound, double largest_move, double reach) noexcept {
   return std::nextafter(bound + growth, std::numeric_limits<double>::infinity());
 }
 
+// The pair filter (exact::intersect_approximate, impl/exact_integer.hpp): circle a's centre is within e_a of
+// (a_x, a_y) on each axis and its radius within e_a of ρ_a (ρ_a, e_a ≥ 0), the same for b. With s, dx, dy the
+// rounded ρ_a + ρ_b, b_x − a_x, b_y − a_y and E = e_a + e_b, each of them is within u·|itself| + E of the exact
+// value (u = 2^-53), so F = S² − X² − Y² is within
+//   (5u + O(u²))·(s² + dx² + dy²)  +  (2 + 2u)·E·(s + |dx| + |dy|) + 3E²
+// of the computed s² − (dx² + dy²) (docs/exact-engine.md). The bound below takes 2^-50 = 8u on the computed
+// sum of squares (which is at least (1 − u)³ of the exact one) and 4·E·(s + |dx| + |dy| + E), each covering
+// its term with the roundings of the bound itself to spare, plus 2^-1069 = 64η for products that underflow
+// (η = 2^-1075; at most eight of them, each off by η).
+// The relative term has more than twice what it needs, so 4u would hold too: with p = RN(s²), q = RN(RN(dx²) +
+// RN(dy²)), the roundings move F by at most 3u·p + 4u·q + O(u²)·m (s's twice and p's own; dx's twice, the
+// square's and the sum's), and a wrong sign needs |p − q| ≤ |F − (p − q)|·(1 + 3u), at most 4u·m(1 + O(u)) plus
+// the E terms, so 3u·p + 4u·q = 3.5u·(p + q) + 0.5u·(q − p) ≤ (3.5u + O(u²))·m plus 0.5u of the E terms, which
+// their factor 4, twice the 2 + 2u they need, covers.
+inline constexpr double kApproximateRelative = 0x1p-50;
+inline constexpr double kApproximateSpread = 4;
+inline constexpr double kApproximateAbsolute = 0x1p-1069;
+
+// The pair list's radii (impl/exact_engine.cpp, rebuild): a circle whose centre is within e of (a_x, a_y) on
+// each axis, so within √2·e in the plane, and whose radius is within e of ρ has r + |a − p| ≤ ρ + (1 + √2)·e,
+// so the disc of that radius around a holds the exact disc. kCentreSpread = 2.5 ≥ (1 + √2)·(1 + 2^-5) covers
+// 1 + √2 = 2.41421… with the two roundings of RN(RN(e·2.5) + skin) to spare (docs/exact-engine.md).
+inline constexpr double kCentreSpread = 2.5;
+
+// The order (ExactEngine::precedes): approximations each within E of their coordinate decide the order
+// when they are more than 4E apart (the derivation is there; 2E would do). The test at its edge (tests/exact_engine_test.cpp,
+// "Walking approximations") fails for any factor below 400/418; between 1 and 2 no world can fail, since E
+// is twice the largest error a walk reaches.
+inline constexpr double kOrderSpread = 4;
+
 }  // namespace circles::impl::exact

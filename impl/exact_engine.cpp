@@ -51,11 +51,6 @@ using exact::Word;
 // the padding together at their edge instead (two points, one at the origin, are dropped by a speed term
 // short by 2^-47.6): tests/exact_engine_test.cpp, "Pairs kept across steps".
 constexpr auto kForever = std::numeric_limits<std::uint64_t>::max();
-// precedes(): approximations each within E of their coordinate decide the order when they are more than
-// 4E apart (the derivation is there; 2E would do). The test at its edge (tests/exact_engine_test.cpp,
-// "Walking approximations") fails for any factor below 400/418; between 1 and 2 no world can fail, since E
-// is twice the largest error a walk reaches.
-constexpr double kOrderSpread = 4;
 
 template <class Int>
 constexpr bool kFixed = !std::is_same_v<Int, Wide>;
@@ -93,33 +88,6 @@ To convert(const From& x) {
     return static_cast<To>(x);
 }
 
-// The integer q·scale, for a rational q whose denominator divides scale.
-Wide scaled(const spec::Q& q, const Wide& scale) {
-  const spec::Q product = q * spec::Q(scale);
-  return boost::multiprecision::numerator(product);
-}
-
-// to[t] = from[permutation[t]] for the slots of one chunk. GMP integers are swapped rather than copied (no
-// allocation); `from` is then scratch.
-template <class T>
-void gather(std::vector<T>& to, std::vector<T>& from, const std::vector<std::uint32_t>& permutation, std::size_t begin,
-            std::size_t end) {
-  for (std::size_t t = begin; t < end; ++t) {
-    if constexpr (std::is_same_v<T, Wide>)
-      to[t].swap(from[permutation[t]]);
-    else
-      to[t] = from[permutation[t]];
-  }
-}
-
-spec::Sequence sequence_of(const World& w) {
-  spec::Sequence out;
-  const auto circles = w.circles();
-  out.reserve(circles.size());
-  for (std::size_t k = 0; k < circles.size(); ++k) out.push_back(spec::from_doubles(circles[k], k, spec::Radii::non_negative));
-  return out;
-}
-
 }  // namespace
 
 ExactEngine::ExactEngine(const World& w, EngineOptions options)
@@ -139,7 +107,7 @@ ExactEngine::ExactEngine(const World& w, EngineOptions options)
     }
   constexpr int kSixty = 6;  // 60 < 2^6
   if (k + kSixty > exact::kNarrowBits || top + k + kSixty > exact::kNarrowBits) {
-    from_rationals(sequence_of(w));
+    from_rationals(spec::from_doubles(w.circles(), spec::Radii::non_negative));
     return;
   }
   Columns<Narrow> s;
@@ -168,34 +136,17 @@ void ExactEngine::from_rationals(const spec::Sequence& circles) {
   const std::size_t n = circles.size();
   if (n > std::numeric_limits<std::uint32_t>::max())
     throw std::length_error("ExactEngine: " + std::to_string(n) + " circles; at most 2^32 - 1");
-  // L: the least common multiple of every field's denominator (2^K for doubles).
-  Wide l = 1;
+  exact::Scaled scaled = exact::scale(circles);
   std::vector<double> radius(n), radius_error(n);
   for (std::size_t k = 0; k < n; ++k) {
-    const spec::Circle& c = circles[k];
-    spec::check_radius(c, k, spec::Radii::non_negative);
-    const std::array<double, 5> rounded = spec::nearest_doubles(c);
-    const spec::Q* fields[5] = {&c.p.x(), &c.p.y(), &c.v.x(), &c.v.y(), &c.r};
-    for (std::size_t f = 0; f < 5; ++f) {
-      if (!std::isfinite(rounded[f]))
-        throw spec::OutsideC(k, static_cast<spec::Field>(f),
-                             "value " + spec::to_string(*fields[f]) + " is beyond the double range");
-      mpz_lcm(raw(l), raw(l), raw(boost::multiprecision::denominator(*fields[f])));
-    }
-    radius[k] = rounded[4];
-    radius_error[k] = spec::exact(rounded[4]) == c.r ? 0.0 : exact::radius_bound(radius[k]);
+    radius[k] = scaled.rounded[k][4];
+    radius_error[k] = spec::exact(radius[k]) == circles[k].r ? 0.0 : exact::radius_bound(radius[k]);
   }
-  den_v_ = l;
-  den_ = 60 * l;
+  den_v_ = std::move(scaled.den_v);
+  den_ = std::move(scaled.den);
   Columns<Wide> s;
-  for (std::vector<Wide>* field : {&s.x, &s.y, &s.vx, &s.vy, &s.r}) field->reserve(n);
-  for (const spec::Circle& c : circles) {
-    s.x.push_back(scaled(c.p.x(), den_));
-    s.y.push_back(scaled(c.p.y(), den_));
-    s.vx.push_back(scaled(c.v.x(), den_v_));
-    s.vy.push_back(scaled(c.v.y(), den_v_));
-    s.r.push_back(scaled(c.r, den_));
-  }
+  std::vector<Wide>* columns[5] = {&s.x, &s.y, &s.vx, &s.vy, &s.r};
+  for (std::size_t f = 0; f < 5; ++f) columns[f]->swap(scaled.columns[f]);
   start(std::move(s), std::move(radius), std::move(radius_error));
 }
 
@@ -210,11 +161,8 @@ void ExactEngine::start(Columns<Int> s, std::vector<double> radius, std::vector<
   // The first layout: slot k holds circle k until the first step's rebuild sorts them; every slot its own
   // least contact until a step finds one.
   const std::size_t n = radius_.size();
-  id_.resize(n);
-  std::iota(id_.begin(), id_.end(), std::uint32_t{0});
-  least_ = id_;
+  layout_ = CellLayout(n);
   approx_.rho = radius_;
-  key_.clear();
   state_ = std::move(s);
   choose_width();
   std::visit([this](auto& columns) { this->settle(columns, 0); }, state_);
@@ -338,7 +286,7 @@ bool ExactEngine::precedes(const Columns<Int>& s, std::size_t a, std::size_t b) 
   // doubles that is subnormal is exact; RN(4E) = 4E, or +∞, which decides nothing). Only approximations
   // closer than that read the integers, which the pair test did not load.
   const Approximations& near = approx_;
-  const double apart = kOrderSpread * error_bound_;
+  const double apart = exact::kOrderSpread * error_bound_;
   for (const auto& [approximation, field, velocity] :
        {std::tuple{&near.x, &s.x, &s.vx}, std::tuple{&near.y, &s.y, &s.vy}}) {
     const double d = (*approximation)[b] - (*approximation)[a];
@@ -353,7 +301,7 @@ bool ExactEngine::precedes(const Columns<Int>& s, std::size_t a, std::size_t b) 
     if ((*field)[a] < (*field)[b]) return true;
     if ((*field)[b] < (*field)[a]) return false;
   }
-  const std::uint32_t i = id_[a], j = id_[b];
+  const std::uint32_t i = layout_.id()[a], j = layout_.id()[b];
   if (s.r[i] < s.r[j]) return true;
   if (s.r[j] < s.r[i]) return false;
   return i < j;
@@ -377,33 +325,32 @@ inline void ExactEngine::approximate(const Int& x, const Int& y, double& ax, dou
 
 template <class Int>
 bool ExactEngine::intersect_exactly(const Columns<Int>& s, std::size_t i, std::size_t j) const {
-  const std::uint32_t ci = id_[i], cj = id_[j];
+  const std::uint32_t ci = layout_.id()[i], cj = layout_.id()[j];
   return exact::intersect_scaled(Int(s.r[ci] + s.r[cj]), Int(now(s.x, s.vx, j) - now(s.x, s.vx, i)),
                                  Int(now(s.y, s.vy, j) - now(s.y, s.vy, i)));
 }
 
 template <class Int>
 void ExactEngine::step_with(Columns<Int>& s) {
-  if (stats_.steps == rebuild_at_) rebuild(s);
-  std::size_t contacts = 0, tested = 0;
-  const std::uint64_t j = stats_.steps - built_at_;  // this step's place in the list's horizon
-  if (!pairs_.quiet(j)) {
-    const Approximations& a = approx_;
-    const double e = error_bound_;
-    contacts = pairs_.least_contacts(
-        j, threads_, least_, touched_, tested,
-        [&](std::size_t i, std::size_t k) {
-          const Decision d = exact::intersect_approximate(a.x[i], a.y[i], a.rho[i], e, a.x[k], a.y[k], a.rho[k], e);
-          if (d != Decision::undecided) [[likely]]
-            return d == Decision::intersect;
-          return intersect_exactly(s, i, k);
-        },
-        [&](std::size_t i, std::size_t k) { return precedes(s, i, k); },
-        PrefetchCircles{a.x.data(), a.y.data(), a.rho.data()});
-  } else {
-    ++stats_.quiet_steps;
-    for (std::vector<std::uint32_t>& list : touched_) list.clear();
-  }
+  layout_.step(
+      stats_, threads_, [&] { rebuild(s); },
+      [&] {
+        const double e = error_bound_;
+        return PairTest{[&s, &a = approx_, e, this](std::size_t i, std::size_t k) {
+                          const Decision d =
+                              exact::intersect_approximate(a.x[i], a.y[i], a.rho[i], e, a.x[k], a.y[k], a.rho[k], e);
+                          if (d != Decision::undecided) [[likely]]
+                            return d == Decision::intersect;
+                          return intersect_exactly(s, i, k);
+                        },
+                        [&s, this](std::size_t i, std::size_t k) { return precedes(s, i, k); },
+                        PrefetchCircles{approx_.x.data(), approx_.y.data(), approx_.rho.data()}};
+      },
+      [&] { move(s); });
+}
+
+template <class Int>
+void ExactEngine::move(Columns<Int>& s) {
   take_velocities(s);
   // Where at least a quarter of the slots are in no listed pair (a fixed width), X waits and the listed
   // slots' approximations walk; the rest catch up at the next rebuild. Otherwise every slot moves now: in a
@@ -413,33 +360,29 @@ void ExactEngine::step_with(Columns<Int>& s) {
     walk();
   else
     settle(s, 1);
-  ++stats_.steps;
-  stats_.pairs_tested += tested;
-  stats_.contacts += contacts;
-  stats_.lonely_circle_steps += pairs_.lonely();
 }
 
 template <class Int>
 void ExactEngine::take_velocities(Columns<Int>& s) {
-  const std::size_t n = id_.size();
+  const std::size_t n = layout_.size();
   const std::size_t chunks = chunk_count(n, threads_);
-  touched_.resize(chunks);
-  const auto untouch = [this] {
-    for (const std::vector<std::uint32_t>& list : touched_)
-      for (const std::uint32_t t : list) least_[t] = t;
+  const CellLayout::Found found = layout_.found(chunks);
+  const auto untouch = [&] {
+    for (const std::vector<std::uint32_t>& list : found.touched)
+      for (const std::uint32_t t : list) found.least[t] = t;
   };
   if constexpr (!kFixed<Int>) {
     // Only a GMP state can reach the double range's end (a fixed-width |X| ≤ 2^125 with D ≥ 60 is below
-    // 2^125): every new position X + V[least] is checked before anything changes (least_[t] == t for a slot
+    // 2^125): every new position X + V[least] is checked before anything changes (least[t] == t for a slot
     // without contact). The lowest circle, px before py, is reported.
     constexpr std::uint64_t kNone = std::numeric_limits<std::uint64_t>::max();
     std::uint64_t first = kNone;  // 2·circle + (0 for px, 1 for py)
     Wide next;
     for (std::size_t t = 0; t < n; ++t) {
-      next = s.x[t] + s.vx[least_[t]];
-      if (mpz_cmpabs(raw(next), raw(overflow_at_)) >= 0) first = std::min(first, 2 * std::uint64_t{id_[t]});
-      next = s.y[t] + s.vy[least_[t]];
-      if (mpz_cmpabs(raw(next), raw(overflow_at_)) >= 0) first = std::min(first, 2 * std::uint64_t{id_[t]} + 1);
+      next = s.x[t] + s.vx[found.least[t]];
+      if (mpz_cmpabs(raw(next), raw(overflow_at_)) >= 0) first = std::min(first, 2 * std::uint64_t{layout_.id()[t]});
+      next = s.y[t] + s.vy[found.least[t]];
+      if (mpz_cmpabs(raw(next), raw(overflow_at_)) >= 0) first = std::min(first, 2 * std::uint64_t{layout_.id()[t]} + 1);
     }
     if (first != kNone) {
       untouch();
@@ -453,9 +396,9 @@ void ExactEngine::take_velocities(Columns<Int>& s) {
   Approximations& a = approx_;
   for_each_chunk(chunks, threads_, [&](std::size_t c) {
     s.moves[c].clear();
-    for (const std::uint32_t t : touched_[c]) {
-      const std::uint32_t l = least_[t];
-      least_[t] = t;  // only t reads least_[t]
+    for (const std::uint32_t t : found.touched[c]) {
+      const std::uint32_t l = found.least[t];
+      found.least[t] = t;  // only t reads least[t]
       if (s.vx[l] == s.vx[t] && s.vy[l] == s.vy[t]) continue;
       // A walking list's contacts are between listed slots, whose moves walk() has computed.
       if (kFixed<Int> && walking_)
@@ -486,7 +429,7 @@ void ExactEngine::take_velocities(Columns<Int>& s) {
 
 template <class Int>
 void ExactEngine::settle(Columns<Int>& s, std::uint64_t moves) {
-  const std::size_t n = id_.size();
+  const std::size_t n = layout_.size();
   const std::size_t chunks = chunk_count(n, threads_);
   Approximations& a = approx_;
   for (std::vector<double>* column : {&a.x, &a.y}) column->resize(n);
@@ -508,7 +451,7 @@ void ExactEngine::settle(Columns<Int>& s, std::uint64_t moves) {
       }
       approximate(s.x[t], s.y[t], a.x[t], a.y[t]);
       reach = std::max({reach, std::fabs(a.x[t]), std::fabs(a.y[t])});
-      if (!radii_exact_) radius = std::max(radius, radius_error_[id_[t]]);
+      if (!radii_exact_) radius = std::max(radius, radius_error_[layout_.id()[t]]);
     }
     largest[c] = {reach, radius};
   };
@@ -528,7 +471,7 @@ void ExactEngine::settle(Columns<Int>& s, std::uint64_t moves) {
 }
 
 void ExactEngine::walk() {
-  const std::size_t n = id_.size();
+  const std::size_t n = layout_.size();
   const std::size_t chunks = chunk_count(n, threads_);
   Approximations& a = approx_;
   ++pending_;
@@ -555,7 +498,7 @@ double ExactEngine::speed_bound(const Columns<Int>& s) const {
   // For approximations v′ within 2^-50·|v′_i| + 2^-1075 of v per coordinate (exact::approximate),
   // |v| ≤ |v′|·(1 + 2^-50) + √2·2^-1075 ≤ norm_upper(v′)·(1 + 2^-50)² + 2^-1073: kSpeedBound's margin and
   // kDriftAbsolute cover both terms (the skin's derivation at the top of this file).
-  const std::size_t n = id_.size();
+  const std::size_t n = layout_.size();
   const std::size_t chunks = chunk_count(n, threads_);
   std::vector<double> largest(chunks, 0.0);
   for_each_chunk(chunks, threads_, [&](std::size_t c) {
@@ -580,13 +523,12 @@ void ExactEngine::rebuild(Columns<Int>& s) {
   // its first step.
   // The pending moves, and every slot's approximations from the integers (error() bounds each of them).
   if (pending_ > 0) settle(s, pending_);
-  const std::size_t n = id_.size();
-  const std::size_t chunks = chunk_count(n, threads_);
+  const std::size_t n = layout_.size();
   Approximations& a = approx_;
   // Velocities are only copied: the first world's bound holds for every later one.
   if (!(vmax_ >= 0)) vmax_ = speed_bound(s);
   const double vmax = vmax_;
-  std::uint64_t horizon = !options_.keep_pairs ? 0 : options_.horizon > 0 ? options_.horizon : schedule_.horizon();
+  std::uint64_t horizon = layout_.horizon(options_);
   double step = step_bound(horizon, vmax, 0, 0);
   double skin = skin_for(horizon, vmax, 0, 0);
   if (!(skin < kInfinity)) {
@@ -594,64 +536,31 @@ void ExactEngine::rebuild(Columns<Int>& s) {
     horizon = 0;
     step = 0;
     skin = 0;
-    schedule_.collapse();
+    layout_.collapse();
   }
   // ρ + kCentreSpread·e ≥ ρ + (1 + √2)·e ≥ r + |c − p|: the circle's disc around its approximate centre
   // holds the exact one; with the skin added, it holds every position of the horizon.
   const auto padding = [&](std::size_t t) {
-    return error(std::max(std::fabs(a.x[t]), std::fabs(a.y[t])), id_[t]) * exact::kCentreSpread;
+    return error(std::max(std::fabs(a.x[t]), std::fabs(a.y[t])), layout_.id()[t]) * exact::kCentreSpread;
   };
   inflated_.resize(n);
   for (std::size_t t = 0; t < n; ++t) inflated_[t] = outward_upper(a.rho[t], padding(t) + skin);
-  if (horizon != planned_horizon_) {
-    grid_.plan(a.x, a.y, inflated_);
-    planned_horizon_ = horizon;
-  }
-  next_key_.resize(n);
-  locate(grid_, threads_, a.x, a.y, inflated_, next_key_);
-  if (key_.size() != n) key_.clear();  // the first layout: no previous order to guide the sort
-  const bool sorted = order_.sort(next_key_, key_, permutation_, threads_);
-  std::swap(key_, next_key_);
-  if (!sorted) {
-    // One gather of every slot field into cell order. least_ is the identity between steps, so it stays.
-    for (std::vector<Int>* field : {&s.x, &s.y, &s.vx, &s.vy}) {
-      s.spare.resize(n);
-      for_each_chunk(chunks, threads_, [&](std::size_t c) {
-        gather(s.spare, *field, permutation_, chunk_begin(n, chunks, c), chunk_begin(n, chunks, c + 1));
-      });
-      field->swap(s.spare);
-    }
-    scratch_.resize(n);
-    for (std::vector<double>* field : {&a.x, &a.y, &a.rho, &inflated_}) {
-      for_each_chunk(chunks, threads_, [&](std::size_t c) {
-        gather(scratch_, *field, permutation_, chunk_begin(n, chunks, c), chunk_begin(n, chunks, c + 1));
-      });
-      field->swap(scratch_);
-    }
-    scratch_id_.resize(n);
-    next_key_.resize(n);
-    for_each_chunk(chunks, threads_, [&](std::size_t c) {
-      const std::size_t b = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1);
-      gather(scratch_id_, id_, permutation_, b, e);
-      gather(next_key_, key_, permutation_, b, e);
-    });
-    std::swap(id_, scratch_id_);
-    std::swap(key_, next_key_);
-  }
-  index_levels(key_, level_begin_, levels_);
-  const CellView view{key_, a.x, a.y, inflated_, levels_, level_begin_};
+  // The slots in cell order, every slot column gathered with them (the radii's integers stay by circle).
+  layout_.arrange(threads_, horizon, a.x, a.y, inflated_, impl::Columns<Int>{s.spare, {&s.x, &s.y, &s.vx, &s.vy}},
+                  impl::Columns<double>{scratch_, {&a.x, &a.y, &a.rho, &inflated_}});
   padded_.resize(n);
   for (std::size_t t = 0; t < n; ++t) padded_[t] = outward_upper(a.rho[t], padding(t));
   // A pair disjoint at the inflated radii cannot meet within the horizon; one that intersects at the padded
   // radii may meet now; the rest from their gap (first_step), the padded radii bounding the exact gap below.
   const double *px = a.x.data(), *py = a.y.data(), *r = padded_.data(), *ri = inflated_.data();
-  pairs_.build(grid_, view, threads_, horizon, Lister{px, py, r, ri, step, horizon});
+  layout_.list(stats_, options_, threads_, horizon, a.x, a.y, inflated_, Lister{px, py, r, ri, step, horizon});
+  const PairList& pairs = layout_.pairs();
   listed_.clear();
   for (std::size_t t = 0; t < n; ++t)
-    if (pairs_.listed(t)) listed_.push_back(static_cast<std::uint32_t>(t));
+    if (pairs.listed(t)) listed_.push_back(static_cast<std::uint32_t>(t));
   // A walking list: the moves per step of its listed slots, V·RN(1/D), each within 2^-50·|w| + 2^-1075 of
   // v/60 (exact::approximate), and W, the largest of them; contacts copy them, so W holds for the list.
-  walking_ = kFixed<Int> && pairs_.lonely() * 4 >= n;
+  walking_ = kFixed<Int> && pairs.lonely() * 4 >= n;
   if constexpr (kFixed<Int>) {
     if (walking_) {
       a.wx.resize(n);
@@ -664,20 +573,13 @@ void ExactEngine::rebuild(Columns<Int>& s) {
       largest_move_ = move;
     }
   }
-  built_at_ = stats_.steps;
-  stats_.pairs_listed += pairs_.size();
-  ++stats_.rebuilds;
-  if (options_.keep_pairs && options_.horizon == 0) schedule_.update(pairs_.tests(), n);
-  rebuild_at_ = stats_.steps + horizon + 1;
 }
 
 std::vector<CandidatePair> ExactEngine::candidates() const {
-  if (stats_.steps == rebuild_at_) {
-    ExactEngine copy = *this;
-    std::visit([&copy](auto& s) { copy.rebuild(s); }, copy.state_);
-    return copy.candidates();
-  }
-  return listed_pairs(pairs_, id_);
+  if (!layout_.due(stats_.steps)) return layout_.listed();
+  ExactEngine copy = *this;
+  std::visit([&copy](auto& s) { copy.rebuild(s); }, copy.state_);
+  return copy.layout_.listed();
 }
 
 World ExactEngine::world() const {
@@ -692,7 +594,7 @@ World ExactEngine::world() const {
             return exact::round_quotient(x, velocity ? den_v_ : den_);
         };
         for (std::size_t t = 0; t < out.size(); ++t) {
-          const std::uint32_t k = id_[t];
+          const std::uint32_t k = layout_.id()[t];
           out[k] = {round(now(s.x, s.vx, t), false), round(now(s.y, s.vy, t), false), round(s.vx[t], true),
                     round(s.vy[t], true), round(s.r[k], false)};
         }
@@ -707,7 +609,7 @@ spec::Sequence ExactEngine::exact() const {
       [&](const auto& s) {
         const spec::Q d(den_), l(den_v_);
         for (std::size_t t = 0; t < out.size(); ++t) {
-          const std::uint32_t k = id_[t];
+          const std::uint32_t k = layout_.id()[t];
           out[k] = spec::circle(spec::Q(convert<Wide>(now(s.x, s.vx, t))) / d,
                                 spec::Q(convert<Wide>(now(s.y, s.vy, t))) / d,
                                 spec::Q(convert<Wide>(s.vx[t])) / l, spec::Q(convert<Wide>(s.vy[t])) / l,
@@ -726,7 +628,7 @@ bool ExactEngine::approximations_hold() const {
           return abs(spec::exact(approximation) - exact) <= e;
         };
         const auto holds = [&](std::size_t t) {
-          const std::uint32_t k = id_[t];
+          const std::uint32_t k = layout_.id()[t];
           return within(approx_.x[t], spec::Q(convert<Wide>(now(s.x, s.vx, t))) / d) &&
                  within(approx_.y[t], spec::Q(convert<Wide>(now(s.y, s.vy, t))) / d) &&
                  within(approx_.rho[t], spec::Q(convert<Wide>(s.r[k])) / d);

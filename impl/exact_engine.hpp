@@ -16,10 +16,9 @@
 // docs/exact-engine.md has the representation, the bounds, the rounding, the boxes and the skin.
 #pragma once
 
-#include "impl/broad_phase.hpp"
+#include "impl/cell_layout.hpp"
 #include "impl/engine.hpp"
 #include "impl/exact_integer.hpp"
-#include "impl/pair_list.hpp"
 #include "spec/oracle.hpp"
 
 #include <array>
@@ -65,10 +64,10 @@ class ExactEngine {
   // D = 60·L, the common denominator of positions and radii (velocities have L).
   const exact::Wide& denominator() const noexcept { return den_; }
 
-  // For the debug validator and tests: the pairs {i, j}, i < j (circle indices), that the next step's pair
+  // Test hooks, which no step calls. The pairs {i, j}, i < j (circle indices), that the next step's pair
   // test would consider, once each (the list it keeps, or the one it would build). O(n + pairs).
   std::vector<CandidatePair> candidates() const;
-  // For the debug validator and tests: true when the doubles the next step's filters read are where their
+  // True when the doubles the next step's filters read are where their
   // bound says, checked in rationals: for every slot the step may test (each in a listed pair while the list
   // walks, else every slot), the approximate centre is within the engine's error bound of the exact one on
   // each axis and the approximate radius within it of the exact radius. O(n) rational arithmetic.
@@ -77,7 +76,7 @@ class ExactEngine {
   // integers wait (docs/exact-engine.md, "Walking approximations").
   bool walks() const noexcept { return walking_; }
 
-  static constexpr unsigned kMaxThreads = BasicEngine<ExactArithmetic>::kMaxThreads;
+  static constexpr unsigned kMaxThreads = BasicEngine<RoundedArithmetic>::kMaxThreads;
 
  private:
   // The integers of the state. Positions and velocities by slot (cell order, slot t holds circle id_[t]), as
@@ -145,6 +144,9 @@ class ExactEngine {
   // state first checks that no new position rounds to ±infinity (PositionOverflow, nothing changed).
   template <class Int>
   void take_velocities(Columns<Int>& s);
+  // A step's move after its contacts: take_velocities, then walk() or settle() by one move.
+  template <class Int>
+  void move(Columns<Int>& s);
   // Every slot takes `moves` moves, X ← X + moves·V (the pending ones, or one for a step that does not walk),
   // and its approximations from the integers; error_bound_ is then error() of the largest.
   template <class Int>
@@ -165,15 +167,9 @@ class ExactEngine {
   std::vector<double> radius_, radius_error_;
   bool radii_exact_ = true;  // every radius_error_ is 0
 
-  // The list of the pairs that can meet before the next rebuild, over slots in cell order (slot t holds
-  // circle id_[t]), as the double engine keeps it.
-  std::uint64_t rebuild_at_ = 0;  // the step whose world gets the next list
-  std::uint64_t built_at_ = 0;    // the step whose world got the current one
-  HorizonSchedule schedule_;
-  std::uint64_t planned_horizon_ = ~std::uint64_t{0};  // the horizon the grid was planned for
-  CellGrid grid_;
-  CellOrder order_;
-  PairList pairs_;
+  // The slots in cell order (slot t holds circle layout_.id()[t]) and the list of the pairs that can meet
+  // before the next rebuild, as the double engine keeps them.
+  CellLayout layout_;
   Approximations approx_;
   double error_bound_ = 0;  // at least the error of every approximation a step may test
   // The list walks (fixed width, at least a quarter of the slots in no listed pair): X and Y wait, pending_
@@ -183,14 +179,9 @@ class ExactEngine {
   std::vector<std::uint32_t> listed_;  // the slots in a listed pair, ascending
   double vmax_ = -1;                    // speed_bound of the first world (−1: not yet computed)
   std::uint64_t pending_ = 0;           // steps whose moves X and Y have not taken (a walking list; every slot)
-  std::vector<std::uint32_t> id_, permutation_, least_, scratch_id_;
-  std::vector<std::vector<std::uint32_t>> touched_;
   // The rebuild's radii (inflated by the skin and the centres' errors; padded by the errors alone) and
   // the gather's scratch.
   std::vector<double> inflated_, padded_, scratch_;
-  std::vector<CellKey> key_, next_key_;
-  std::vector<unsigned> levels_;
-  std::array<std::size_t, CellGrid::kLevels + 1> level_begin_{};
 };
 
 }  // namespace circles::impl

@@ -34,18 +34,6 @@ using exact::raw;
 using exact::Wide;
 using Circles = std::vector<std::array<double, 5>>;
 
-// The integer q·scale, for a rational q whose denominator divides scale.
-Wide at_scale(const spec::Q& q, const Wide& scale) {
-  return boost::multiprecision::numerator(q) * (scale / boost::multiprecision::denominator(q));
-}
-
-spec::Sequence exact_of(const Circles& w) {
-  spec::Sequence out;
-  out.reserve(w.size());
-  for (std::size_t k = 0; k < w.size(); ++k) out.push_back(spec::from_doubles(w[k], k, spec::Radii::non_negative));
-  return out;
-}
-
 }  // namespace
 
 std::optional<double> exact_grid_side(const Circles& rounded) {
@@ -57,35 +45,16 @@ std::optional<double> exact_grid_side(const Circles& rounded) {
   return h;
 }
 
-ExactGrid::ExactGrid(const Circles& w0) : ExactGrid(exact_of(w0)) {}
+ExactGrid::ExactGrid(const Circles& w0) : ExactGrid(spec::from_doubles(w0, spec::Radii::non_negative)) {}
 
 ExactGrid::ExactGrid(const spec::Sequence& w0) {
   const std::size_t n = w0.size();
-  // L: the least common multiple of every field's denominator.
-  Wide l = 1;
-  rounded_.reserve(n);
-  for (std::size_t k = 0; k < n; ++k) {
-    const spec::Circle& c = w0[k];
-    spec::check_radius(c, k, spec::Radii::non_negative);
-    rounded_.push_back(spec::nearest_doubles(c));
-    const spec::Q* fields[5] = {&c.p.x(), &c.p.y(), &c.v.x(), &c.v.y(), &c.r};
-    for (std::size_t f = 0; f < 5; ++f) {
-      if (!std::isfinite(rounded_[k][f]))
-        throw spec::OutsideC(k, static_cast<spec::Field>(f),
-                             "value " + spec::to_string(*fields[f]) + " is beyond the double range");
-      mpz_lcm(raw(l), raw(l), raw(boost::multiprecision::denominator(*fields[f])));
-    }
-  }
-  den_v_ = l;
-  den_ = 60 * l;
-  for (auto* field : {&x_, &y_, &vx_, &vy_, &r_}) field->reserve(n);
-  for (const spec::Circle& c : w0) {
-    x_.push_back(at_scale(c.p.x(), den_));
-    y_.push_back(at_scale(c.p.y(), den_));
-    vx_.push_back(at_scale(c.v.x(), den_v_));
-    vy_.push_back(at_scale(c.v.y(), den_v_));
-    r_.push_back(at_scale(c.r, den_));
-  }
+  exact::Scaled scaled = exact::scale(w0);
+  rounded_ = std::move(scaled.rounded);
+  den_ = std::move(scaled.den);
+  den_v_ = std::move(scaled.den_v);
+  std::vector<Wide>* columns[5] = {&x_, &y_, &vx_, &vy_, &r_};
+  for (std::size_t f = 0; f < 5; ++f) columns[f]->swap(scaled.columns[f]);
   for (auto* field : {&next_x_, &next_y_, &next_vx_, &next_vy_}) field->resize(n);
   next_rounded_.resize(n);
   error_.resize(n);

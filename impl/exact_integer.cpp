@@ -141,4 +141,35 @@ double approximate(const Wide& n, const Wide& d) noexcept {
   return std::clamp(x, -kMax, kMax);
 }
 
+Scaled scale(const std::vector<spec::Circle>& circles) {
+  const std::size_t n = circles.size();
+  Scaled out;
+  Wide l = 1;
+  out.rounded.reserve(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const spec::Circle& c = circles[k];
+    spec::check_radius(c, k, spec::Radii::non_negative);
+    out.rounded.push_back(spec::nearest_doubles(c));
+    const spec::Q* fields[5] = {&c.p.x(), &c.p.y(), &c.v.x(), &c.v.y(), &c.r};
+    for (std::size_t f = 0; f < 5; ++f) {
+      if (!std::isfinite(out.rounded[k][f]))
+        throw spec::OutsideC(k, static_cast<spec::Field>(f),
+                             "value " + spec::to_string(*fields[f]) + " is beyond the double range");
+      mpz_lcm(raw(l), raw(l), raw(boost::multiprecision::denominator(*fields[f])));
+    }
+  }
+  out.den_v = l;
+  out.den = 60 * l;
+  // q·scale for a rational q whose denominator divides scale.
+  const auto at_scale = [](const spec::Q& q, const Wide& scale) -> Wide {
+    return boost::multiprecision::numerator(q) * (scale / boost::multiprecision::denominator(q));
+  };
+  for (std::vector<Wide>& column : out.columns) column.reserve(n);
+  for (const spec::Circle& c : circles) {
+    const spec::Q* fields[5] = {&c.p.x(), &c.p.y(), &c.v.x(), &c.v.y(), &c.r};
+    for (std::size_t f = 0; f < 5; ++f) out.columns[f].push_back(at_scale(*fields[f], f == 2 || f == 3 ? out.den_v : out.den));
+  }
+  return out;
+}
+
 }  // namespace circles::impl::exact

@@ -12,13 +12,17 @@
 // docs/exact-engine.md has the derivations of the filters' bounds and of the headroom.
 #pragma once
 
+#include "impl/exact_bounds.hpp"
 #include "impl/predicate.hpp"
+#include "spec/circle.hpp"
 #include "spec/rational.hpp"
 
 #include <gmp.h>
 
+#include <array>
 #include <cmath>
 #include <cstdint>
+#include <vector>
 
 namespace circles::impl::exact {
 
@@ -64,23 +68,9 @@ bool intersect_scaled(const Wide& s, const Wide& dx, const Wide& dy);
 int intersect_filter(double s, double dx, double dy) noexcept;
 
 // The filter on approximations (the engine's first test of a pair): circle a's centre is within e_a of
-// (a_x, a_y) on each axis and its radius within e_a of ρ_a (ρ_a, e_a ≥ 0), the same for b. With s, dx, dy the
-// rounded ρ_a + ρ_b, b_x − a_x, b_y − a_y and E = e_a + e_b, each of them is within u·|itself| + E of the exact
-// value (u = 2^-53), so F = S² − X² − Y² is within
-//   (5u + O(u²))·(s² + dx² + dy²)  +  (2 + 2u)·E·(s + |dx| + |dy|) + 3E²
-// of the computed s² − (dx² + dy²) (docs/exact-engine.md). The bound below takes 2^-50 = 8u on the computed
-// sum of squares (which is at least (1 − u)³ of the exact one) and 4·E·(s + |dx| + |dy| + E), each covering
-// its term with the roundings of the bound itself to spare, plus 2^-1069 = 64η for products that underflow
-// (η = 2^-1075; at most eight of them, each off by η). A non-finite value anywhere makes the bound +∞ or NaN:
-// undecided. Branch-free, like impl::sign_filter.
-// The relative term has more than twice what it needs, so 4u would hold too: with p = RN(s²), q = RN(RN(dx²) +
-// RN(dy²)), the roundings move F by at most 3u·p + 4u·q + O(u²)·m (s's twice and p's own; dx's twice, the
-// square's and the sum's), and a wrong sign needs |p − q| ≤ |F − (p − q)|·(1 + 3u), at most 4u·m(1 + O(u)) plus
-// the E terms, so 3u·p + 4u·q = 3.5u·(p + q) + 0.5u·(q − p) ≤ (3.5u + O(u²))·m plus 0.5u of the E terms, which
-// their factor 4, twice the 2 + 2u they need, covers.
-inline constexpr double kApproximateRelative = 0x1p-50;
-inline constexpr double kApproximateSpread = 4;
-inline constexpr double kApproximateAbsolute = 0x1p-1069;
+// (a_x, a_y) on each axis and its radius within e_a of ρ_a (ρ_a, e_a ≥ 0), the same for b. Its bound and
+// the derivation are in impl/exact_bounds.hpp (kApproximate*). A non-finite value anywhere makes the bound +∞
+// or NaN: undecided. Branch-free, like impl::sign_filter.
 inline Decision intersect_approximate(double ax, double ay, double rho_a, double e_a, double bx, double by,
                                       double rho_b, double e_b) noexcept {
   const double s = rho_a + rho_b, dx = bx - ax, dy = by - ay, e = e_a + e_b;
@@ -92,12 +82,6 @@ inline Decision intersect_approximate(double ax, double ay, double rho_a, double
   const bool positive = d > 0;
   return static_cast<Decision>((decided & positive) | (!decided) << 1);
 }
-
-// The pair list's radii (impl/exact_engine.cpp, rebuild): a circle whose centre is within e of (a_x, a_y) on
-// each axis, so within √2·e in the plane, and whose radius is within e of ρ has r + |a − p| ≤ ρ + (1 + √2)·e,
-// so the disc of that radius around a holds the exact disc. kCentreSpread = 2.5 ≥ (1 + √2)·(1 + 2^-5) covers
-// 1 + √2 = 2.41421… with the two roundings of RN(RN(e·2.5) + skin) to spare (docs/exact-engine.md).
-inline constexpr double kCentreSpread = 2.5;
 
 // RN(n/d) for d > 0. Narrow is exact integer division with a sticky remainder; Wide takes the same division
 // when |n| < 2^126 and d < 2^127, else goes through spec::nearest_double (magnitudes beyond the double range
@@ -111,5 +95,17 @@ double round_quotient(const Wide& n, const Wide& d);
 inline double approximate(Word n, double inverse) noexcept { return static_cast<double>(n) * inverse; }
 inline double approximate(Narrow n, double inverse) noexcept { return to_double(n) * inverse; }
 double approximate(const Wide& n, const Wide& d) noexcept;
+
+// Rational circles as the exact engines hold them: L, the least common multiple of every field's
+// denominator, D = 60·L, and per circle the integers X = D·p_x, Y = D·p_y, V = L·v, R = D·r, with each
+// field's nearest double (spec::nearest_doubles).
+struct Scaled {
+  Wide den, den_v;  // D and L
+  std::array<std::vector<Wide>, 5> columns;  // X, Y, V_x, V_y, R, circle k at index k
+  std::vector<std::array<double, 5>> rounded;
+};
+// Throws spec::OutsideC for a negative radius, and for a field whose nearest double is infinite, naming the
+// circle and field.
+Scaled scale(const std::vector<spec::Circle>& circles);
 
 }  // namespace circles::impl::exact

@@ -42,16 +42,14 @@ namespace circles::impl {
 // roundings (relative 2^-53 each) of its own arithmetic and of vmax (norm_upper):
 //   kSpeedBound   = 0x1.11111111112p-6 ≥ (1/60)·(1 + 2^-45): 1/60 = 0x1.111…p-6, cut after 44 bits and rounded
 //                   up; 2^-45 > 2^-50 > eight roundings of 2^-53; below (1/60)(1 + 2^-44), as
-//                   tests/pair_list_test.cpp recomputes. No world shows that margin's edge, nor 1/60's:
-//                   where moves are exact the drift term is slack (far·kDriftBound, about 2^-51.7 of a step
-//                   or more for a pair that closes its gap within the horizon), and so are the list
-//                   filter's margin (2^-50 of the distance) and outward_upper's (2^-52). A speed term short
-//                   of 1/60 by less than those lists the same pairs in every world tried: vmax/60 and
-//                   vmax·RN(1/60), short by at most norm_upper's 2^-50 and by 2^-56, pass every test
-//                   (tried). Whether the other terms' roundings could all go against such a term at once is
-//                   not proven either way, so kSpeedBound keeps its own margin. The tests put the whole step
-//                   bound at its edge instead: two points that meet at the horizon's end in the tightest
-//                   world are dropped by a speed term short of 1/60 by 2^-49 (not by 2^-49.2).
+//                   tests/pair_list_test.cpp recomputes. Where moves are exact the drift term is slack
+//                   (far·kDriftBound, about 2^-51.7 of a step or more for a pair that closes its gap within
+//                   the horizon), and so are the list filter's margin (2^-50 of the distance) and
+//                   outward_upper's (2^-52). Whether the other terms' roundings could all go against a speed
+//                   term short of 1/60 at once is not proven either way, so kSpeedBound keeps its own margin.
+//                   The tests put the whole step bound at its edge: two points that meet at the horizon's end
+//                   in the tightest world (tests/pair_list_test.cpp); docs/hardening.md ("Mutants") has the
+//                   runs around this margin.
 //   kDriftBound   = 0x1.6a1p-53 ≥ √2·2^-53·(1 + 2^-14): √2 = 0x1.6a09e6…, rounded up at 12 bits. Its margin
 //                   also covers `far` leaving out the drift itself (H·2^-52 relative, H ≤ kMaxHorizon). Its
 //                   edge is on the diagonal, where both coordinates round forward by half an ulp: 2^-53 (the √2
@@ -157,9 +155,9 @@ inline std::uint32_t first_step(double ax, double ay, double ar, double bx, doub
                                   double br_wide, double step, std::uint64_t horizon) noexcept {
   const double dx = bx - ax, dy = by - ay;
   const double d2 = dx * dx + dy * dy;
-  if (certainly_disjoint_of_squares(d2, ar_wide + br_wide, kAbsolute)) [[likely]]
+  if (certainly_disjoint_of_squares(d2, ar_wide + br_wide, filter::kAbsolute)) [[likely]]
     return kNever;
-  if (certainly_intersecting_of_squares(d2, ar + br, kAbsolute)) return 0;
+  if (certainly_intersecting_of_squares(d2, ar + br, filter::kAbsolute)) return 0;
   return first_step_from(dx, dy, d2, ar, br, step, horizon);
 }
 
@@ -175,7 +173,7 @@ struct Lister {
 
   [[gnu::always_inline]] bool near(std::size_t a, std::size_t b) const noexcept {
     const double dx = px[b] - px[a], dy = py[b] - py[a];
-    return !certainly_disjoint_of_squares(dx * dx + dy * dy, ri[a] + ri[b], kAbsolute);
+    return !certainly_disjoint_of_squares(dx * dx + dy * dy, ri[a] + ri[b], filter::kAbsolute);
   }
   [[gnu::always_inline]] std::uint32_t operator()(std::size_t a, std::size_t b) const noexcept {
     return listing_step(px[a], py[a], r[a], ri[a], px[b], py[b], r[b], ri[b], step, horizon);
@@ -334,7 +332,7 @@ class PairList {
 };
 
 // The listed pairs as circle indices {i, j}, i < j, each once, in order, for slots where slot t holds circle
-// id[t]: what the engines' candidates() give the debug validator.
+// id[t]: what the engines' candidates() give the tests.
 inline std::vector<CandidatePair> listed_pairs(const PairList& pairs, std::span<const std::uint32_t> id) {
   std::vector<CandidatePair> out;
   pairs.for_each([&](std::size_t a, std::size_t b) {

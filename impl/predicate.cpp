@@ -47,7 +47,7 @@ Decision intersect_rescaled(double ax, double ay, double ar, double bx, double b
   if (m == 0) return Decision::intersect;
   const int e = std::min(std::max(biased_exponent(m), 1) - 1023, 1022);
   const double f = power_of_two(-e);
-  return sign_filter(dx * f, dy * f, s * f, kAbsoluteRescaled);
+  return sign_filter(dx * f, dy * f, s * f, filter::kAbsoluteRescaled);
 }
 
 // Stage B. Every input is m·2^e; with E the least e, the integers N = m·2^(e−E) give
@@ -87,7 +87,7 @@ bool intersect_fallback(double ax, double ay, double ar, double bx, double by, d
   const double dx = bx - ax;
   const double dy = by - ay;
   const double m = s * s + (dx * dx + dy * dy);  // Stage A's M
-  if (std::isinf(m) || m < kRescaleBelow) {
+  if (std::isinf(m) || m < filter::kRescaleBelow) {
     if (const Decision d = intersect_rescaled(ax, ay, ar, bx, by, br); d != Decision::undecided) {
       stage = Stage::rescaled;
       return d == Decision::intersect;

@@ -34,6 +34,10 @@ enum class Decision : std::uint8_t { disjoint = 0, intersect = 1, undecided = 2 
 // Which stage gave intersect_exact its answer.
 enum class Stage : std::uint8_t { filter, rescaled, gmp };
 
+// The bounds of the filter (Stage A and A′ of intersect_exact; impl/pair_list.hpp's listing filters use
+// kAbsolute too), each with its derivation.
+namespace filter {
+
 // kRelative = 2^-50 = 8u: the bound's factor on M = RN(P + Q), the computed S² + X² + Y².
 // |D − F| ≤ k·M + γ·(b + η), k = ((1+u)^5 − 1)/(1−u)^5 ≈ 5.0000000000000036u: the X² term passes five
 // roundings (dx, twice as it is squared; the square; the sum of squares; D) and M may sit five roundings
@@ -58,6 +62,8 @@ inline constexpr double kAbsoluteRescaled = 0x1p-1070;
 // absolute term is under 2^-122·M·2^-50, so rescaling would give the same verdict and only cost time.
 inline constexpr double kRescaleBelow = 0x1p-900;
 
+}  // namespace filter
+
 // Stage A's two computed terms from q = RN(RN(dx²) + RN(dy²)) and s, where dx, dy, s are X, Y, S rounded once
 // each (plus, in Stage A', the absolute error kAbsoluteRescaled allows for): D = RN(s² − q), the computed F,
 // and its certified error bound RN(RN(M·2^-50) + absolute) with M = RN(s² + q). `absolute` is kAbsolute or
@@ -68,7 +74,7 @@ struct FilterTerms {
 inline FilterTerms filter_terms(double q, double s, double absolute) {
   const double p = s * s;
   const double m = p + q;  // +inf on any overflow, and then the bound is +inf: undecided
-  return {p - q, m * kRelative + absolute};
+  return {p - q, m * filter::kRelative + absolute};
 }
 
 // The certified sign of F = S² − X² − Y² from those terms.
@@ -112,7 +118,7 @@ inline bool intersect_naive(double ax, double ay, double ar, double bx, double b
 inline Decision intersect_filter(double ax, double ay, double ar, double bx, double by, double br) {
   const double s = ar + br;
   const bool negative = s < 0;
-  return static_cast<Decision>(static_cast<int>(sign_filter(bx - ax, by - ay, s, kAbsolute)) * !negative);
+  return static_cast<Decision>(static_cast<int>(sign_filter(bx - ax, by - ay, s, filter::kAbsolute)) * !negative);
 }
 
 // Stage A': rescaled filter. Decides every input that is not within about 2^-50 of tangency.

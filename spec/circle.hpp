@@ -32,6 +32,9 @@ void check_radius(const Circle& c, std::size_t index, Radii radii);
 // The circle with the exact values of five doubles [px, py, vx, vy, r].
 // Throws OutsideC as check_doubles does.
 Circle from_doubles(const std::array<double, 5>& fields, std::size_t index, Radii radii);
+// A world of doubles [px, py, vx, vy, r] per circle at its exact values, circle k from circles[k] (a
+// spec::Sequence). Throws OutsideC for the first circle outside C, as from_doubles does.
+std::vector<Circle> from_doubles(const std::vector<std::array<double, 5>>& circles, Radii radii);
 
 // The five coordinates of c, each rounded to the nearest double (see nearest_double).
 std::array<double, 5> nearest_doubles(const Circle& c);

@@ -38,9 +38,7 @@ Sequence resolved_step(const Sequence& w) {
 }
 
 std::vector<std::array<double, 5>> resolved_step_rounded(const std::vector<std::array<double, 5>>& w) {
-  Sequence exact_w;
-  exact_w.reserve(w.size());
-  for (std::size_t k = 0; k < w.size(); ++k) exact_w.push_back(from_doubles(w[k], k, Radii::non_negative));
+  const Sequence exact_w = from_doubles(w, Radii::non_negative);
   std::vector<std::array<double, 5>> out;
   out.reserve(w.size());
   for (const Circle& c : resolved_step(exact_w)) out.push_back(nearest_doubles(c));

@@ -18,9 +18,7 @@ inline std::vector<std::array<double, 5>> nearest(const spec::Sequence& w) {
 }
 
 inline spec::Sequence exact_of(const std::vector<std::array<double, 5>>& w) {
-  spec::Sequence out;
-  for (std::size_t k = 0; k < w.size(); ++k) out.push_back(spec::from_doubles(w[k], k, spec::Radii::non_negative));
-  return out;
+  return spec::from_doubles(w, spec::Radii::non_negative);
 }
 
 // Two circles of radius 0.61·2^-537 with centres (0.72, 0.72)·2^-537 apart: they intersect (S² = 1.4884·2^-1074

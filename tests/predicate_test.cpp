@@ -31,6 +31,7 @@ namespace {
 
 using spec::Q;
 using spec::Z;
+using namespace impl::filter;  // the filter's bounds, by the names docs/predicate.md gives them
 
 struct Input {
   double ax, ay, ar, bx, by, br;

@@ -1,0 +1,198 @@
+// The cell layout both engines share: their circles in cell order (slots), the kept pair list, the horizon
+// schedule and when to rebuild. An engine owns only its arithmetic (its columns by slot, how a step moves
+// them, how its radii are padded and widened for a list, how it decides a pair); the layout owns the rest:
+//
+//   CellLayout
+//     slots      id (slot t holds circle id[t]), keys, CellOrder's permutation, the gather of the id, the keys
+//                and every column an engine registers with arrange()
+//     grid       CellGrid (planned per horizon), the levels that hold a circle
+//     pair list  PairList over the slots, each slot's least contact and the slots touched by a step
+//     schedule   HorizonSchedule, the step the list was built in and the step that rebuilds
+//
+// A step (CellLayout::step): rebuild when the list's horizon has ended (the engine's rebuild calls horizon(),
+// arrange() and list()), the contacts of the listed pairs by the engine's pair test, the engine's move, the
+// statistics. The member templates that test pairs need impl/pair_list_impl.hpp, which only the engines'
+// .cpp files include. docs/engine.md draws the layout.
+#pragma once
+
+#include "impl/broad_phase.hpp"
+#include "impl/contacts.hpp"
+#include "impl/pair_list.hpp"
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <initializer_list>
+#include <numeric>
+#include <span>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace circles::impl {
+
+struct EngineOptions {
+  // Worker threads; 0 means one per core (std::thread::hardware_concurrency()). Results are the same bits
+  // for every value.
+  unsigned threads = 0;
+  // Keep candidate pairs across steps (impl/pair_list.hpp: a list with a proven skin, rebuilt when its
+  // horizon ends); false builds a list for every step alone. Results are the same bits either way.
+  bool keep_pairs = true;
+  // The horizon of every list, in steps, instead of HorizonSchedule's choice (0 means that choice); for tests
+  // and benchmarks. With keep_pairs false it is ignored. Results are the same bits for every value.
+  std::uint64_t horizon = 0;
+};
+
+// The columns of one element type an engine keeps by slot, for arrange() to gather into the new cell order,
+// with `scratch`, a vector of the same type, as the gather's target (it is swapped with each column).
+template <class T>
+struct Columns {
+  std::vector<T>& scratch;
+  std::initializer_list<std::vector<T>*> columns;
+};
+
+// An engine's pair test for one step, as PairList::least_contacts takes it: intersect(a, b), precedes(a, b)
+// on slots, and the prefetch hint.
+template <class Intersect, class Precedes, class Prefetch>
+struct PairTest {
+  Intersect intersect;
+  Precedes precedes;
+  Prefetch prefetch;
+};
+template <class I, class P, class F>
+PairTest(I, P, F) -> PairTest<I, P, F>;
+
+class CellLayout {
+ public:
+  // n circles, slot k holding circle k until the first rebuild sorts them; every slot its own least contact.
+  explicit CellLayout(std::size_t n = 0) : id_(n), least_(n) {
+    std::iota(id_.begin(), id_.end(), std::uint32_t{0});
+    least_ = id_;
+  }
+
+  std::size_t size() const noexcept { return id_.size(); }
+  // The circle slot t holds.
+  std::span<const std::uint32_t> id() const noexcept { return id_; }
+  // What a step's contacts found, for its move: each slot's least contact (itself if none; the move sets
+  // every touched slot's back to itself) and, per chunk of `chunks`, the slots the contacts touched.
+  struct Found {
+    std::vector<std::uint32_t>& least;
+    std::vector<std::vector<std::uint32_t>>& touched;
+  };
+  Found found(std::size_t chunks) {
+    touched_.resize(chunks);
+    return {least_, touched_};
+  }
+  const PairList& pairs() const noexcept { return pairs_; }
+  // True when the step numbered `steps` (steps taken so far) rebuilds the list.
+  bool due(std::uint64_t steps) const noexcept { return steps == rebuild_at_; }
+
+  // One step: rebuild() when due, then the contacts by the pair test make_test() returns (called after the
+  // rebuild, so that it reads the columns as arranged), then move(), then the statistics.
+  template <class Rebuild, class MakeTest, class Move>
+  void step(EngineStats& stats, unsigned threads, Rebuild&& rebuild, MakeTest&& make_test, Move&& move) {
+    if (due(stats.steps)) rebuild();
+    std::size_t contacts = 0, tested = 0;
+    const std::uint64_t j = stats.steps - built_at_;  // this step's place in the list's horizon
+    if (!pairs_.quiet(j)) {
+      auto test = make_test();
+      contacts = pairs_.least_contacts(j, threads, least_, touched_, tested, test.intersect, test.precedes,
+                                       test.prefetch);
+    } else {
+      ++stats.quiet_steps;
+      for (std::vector<std::uint32_t>& list : touched_) list.clear();
+    }
+    move();
+    ++stats.steps;
+    stats.pairs_tested += tested;
+    stats.contacts += contacts;
+    stats.lonely_circle_steps += pairs_.lonely();
+  }
+
+  // The horizon of the next list: none without kept pairs, the options' fixed one, or the schedule's.
+  std::uint64_t horizon(const EngineOptions& options) const noexcept {
+    return !options.keep_pairs ? 0 : options.horizon > 0 ? options.horizon : schedule_.horizon();
+  }
+  // A horizon whose skin was not finite: the list covers its own world, and so does the schedule's next.
+  void collapse() noexcept { schedule_.collapse(); }
+
+  // The slots in cell order for circles at (x, y) with radii `inflated` (all by slot): the grid planned
+  // again when the horizon changed, keys, CellOrder's sort guided by the last keys, and, when the order
+  // changed, one gather of the id, the keys and every registered column (x, y and inflated among them).
+  template <class... T>
+  void arrange(unsigned threads, std::uint64_t horizon, const std::vector<double>& x, const std::vector<double>& y,
+               const std::vector<double>& inflated, Columns<T>... columns) {
+    const std::size_t n = id_.size();
+    if (horizon != planned_horizon_) {
+      grid_.plan(x, y, inflated);
+      planned_horizon_ = horizon;
+    }
+    next_key_.resize(n);
+    locate(grid_, threads, x, y, inflated, next_key_);
+    if (key_.size() != n) key_.clear();  // the first layout: no previous order to guide the sort
+    const bool sorted = order_.sort(next_key_, key_, permutation_, threads);
+    std::swap(key_, next_key_);
+    if (!sorted) {
+      // least_ is the identity between steps, so it stays.
+      (gather(threads, columns), ...);
+      scratch_id_.resize(n);
+      gather(threads, Columns<std::uint32_t>{scratch_id_, {&id_}});
+      gather(threads, Columns<CellKey>{next_key_, {&key_}});
+    }
+    index_levels(key_, level_begin_, levels_);
+  }
+
+  // After arrange(): the list for the horizon, over the circles at (x, y) with radii `inflated` (as
+  // arranged), each pair from its first step by `lister`; then the schedule's bookkeeping for a list built in
+  // the step numbered stats.steps.
+  void list(EngineStats& stats, const EngineOptions& options, unsigned threads, std::uint64_t horizon,
+            const std::vector<double>& x, const std::vector<double>& y, const std::vector<double>& inflated,
+            const Lister& lister) {
+    const CellView view{key_, x, y, inflated, levels_, level_begin_};
+    pairs_.build(grid_, view, threads, horizon, lister);
+    built_at_ = stats.steps;
+    stats.pairs_listed += pairs_.size();
+    ++stats.rebuilds;
+    if (options.keep_pairs && options.horizon == 0) schedule_.update(pairs_.tests(), id_.size());
+    rebuild_at_ = stats.steps + horizon + 1;
+  }
+
+  // The pairs {i, j}, i < j (circle indices) of the kept list, once each.
+  std::vector<CandidatePair> listed() const { return listed_pairs(pairs_, id_); }
+
+ private:
+  // column[t] ← column[permutation[t]] for every registered column, per chunk. Values that own memory (GMP
+  // integers) are swapped rather than copied (no allocation); the column is scratch afterwards either way.
+  template <class T>
+  void gather(unsigned threads, const Columns<T>& set) {
+    const std::size_t n = id_.size();
+    const std::size_t chunks = chunk_count(n, threads);
+    set.scratch.resize(n);
+    for (std::vector<T>* column : set.columns) {
+      for_each_chunk(chunks, threads, [&](std::size_t c) {
+        for (std::size_t t = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1); t < e; ++t) {
+          if constexpr (std::is_trivially_copyable_v<T>)
+            set.scratch[t] = (*column)[permutation_[t]];
+          else
+            set.scratch[t].swap((*column)[permutation_[t]]);
+        }
+      });
+      column->swap(set.scratch);
+    }
+  }
+
+  std::vector<std::uint32_t> id_, least_, permutation_, scratch_id_;
+  std::vector<std::vector<std::uint32_t>> touched_;
+  std::vector<CellKey> key_, next_key_;  // by the inflated radii of the last rebuild
+  std::vector<unsigned> levels_;          // the levels that hold a circle, ascending, the global level excluded
+  std::array<std::size_t, CellGrid::kLevels + 1> level_begin_{};  // level L: [level_begin[L], level_begin[L + 1])
+  CellGrid grid_;
+  CellOrder order_;
+  PairList pairs_;
+  HorizonSchedule schedule_;
+  std::uint64_t rebuild_at_ = 0;  // the step whose world gets the next list
+  std::uint64_t built_at_ = 0;    // the step whose world got the current one
+  std::uint64_t planned_horizon_ = ~std::uint64_t{0};  // the horizon the grid was planned for
+};
+
+}  // namespace circles::impl
