@@ -16,7 +16,7 @@
 //                                           --engine double --threads 1` (`circles conform --exec ...`): the
 //                                           same work, the step done by the other process, and the protocol.
 //                                           Real time: P per request.
-//   candidate_step/engine:double            conform::step_once on each asked world: S, the engine's step alone,
+//   candidate_step/engine:double            engines::step_once on each asked world: S, the engine's step alone,
 //                                           the part of A that the protocol run does in the other process.
 //   candidate_answer/engine:double          conform::answer on each asked world's request line: C, what `circles
 //                                           serve` does per request short of reading and writing its pipes
@@ -42,7 +42,7 @@
 #include "bench/harness.hpp"
 #include "conform/candidate.hpp"
 #include "conform/conform.hpp"
-#include "conform/engines.hpp"
+#include "engines/registry.hpp"
 #include "formats/protocol.hpp"
 #include "conform/serve.hpp"
 
@@ -126,7 +126,7 @@ void check(conform::Candidate& candidate, Profile profile) {
 // The worlds conform asks a conforming candidate, in order, recorded from a run on the double engine, and,
 // given a list, the requests of each batch it sends them in.
 std::vector<Circles> asked_worlds(Profile profile, std::vector<std::size_t>* batches = nullptr) {
-  conform::EngineCandidate engine(conform::engine("double"), 1);
+  conform::EngineCandidate engine(engines::engine("double"), 1);
   std::vector<Circles> asked;
   Relay recorder(engine, &asked);
   check(recorder, profile);
@@ -177,7 +177,7 @@ std::size_t run_conform(benchmark::State& state, conform::Candidate& candidate, 
 }
 
 void conform_in_process(benchmark::State& state, const char* engine, Profile profile) {
-  conform::EngineCandidate candidate(conform::engine(engine), 1);
+  conform::EngineCandidate candidate(engines::engine(engine), 1);
   run_conform(state, candidate, profile);
 }
 
@@ -192,9 +192,9 @@ void conform_protocol(benchmark::State& state) {
 
 void candidate_step(benchmark::State& state) {
   const std::vector<Circles> worlds = asked_worlds(Profile::resolved);
-  const conform::EngineEntry& engine = conform::engine("double");
+  const engines::EngineEntry& engine = engines::engine("double");
   for (auto _ : state)
-    for (const Circles& w : worlds) benchmark::DoNotOptimize(conform::step_once(engine, w, 1));
+    for (const Circles& w : worlds) benchmark::DoNotOptimize(engines::step_once(engine, w, 1));
   count(state, worlds.size());
 }
 
@@ -202,7 +202,7 @@ void candidate_answer(benchmark::State& state) {
   std::vector<std::string> requests;
   for (const Circles& w : asked_worlds(Profile::resolved))
     requests.push_back(formats::format_line(formats::kId, requests.size() + 1, w));
-  const conform::EngineEntry& engine = conform::engine("double");
+  const engines::EngineEntry& engine = engines::engine("double");
   for (auto _ : state)
     for (std::size_t k = 0; k < requests.size(); ++k)
       benchmark::DoNotOptimize(conform::answer(engine, 1, requests[k], k + 1));

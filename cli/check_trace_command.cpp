@@ -41,6 +41,23 @@ void print_check(const TraceCheck& check, const std::string& source, TraceRefere
       << ")\n";
 }
 
+CLI::App* add_check_trace_command(CLI::App& app, CheckTraceCommandOptions& options) {
+  CLI::App* check_trace = app.add_subcommand(
+      "check-trace",
+      "Check a trace recorded by any implementation step by step against the spec; exits 0 (it agrees), 1 (a world "
+      "differs) or 2 (not a trace) (docs/vectors.md)");
+  // No CLI::ExistingFile: a missing file is reported by the trace reader, as every other bad trace is.
+  check_trace->add_option("trace", options.file, "The trace: JSON Lines, one {\"step\": t, \"circles\": [...]} per world")
+      ->required();
+  check_trace
+      ->add_option("--engine", options.engine,
+                   "double: each world the correctly rounded step of the one before; exact: the oracle's exact "
+                   "sequence from the first world, rounded")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"double", "exact"}));
+  return check_trace;
+}
+
 int check_trace_command(const std::string& path, TraceReference kind, std::ostream& out, std::ostream& err) {
   try {
     TraceReader reader(path);

@@ -1,10 +1,11 @@
 #include "cli/conform_command.hpp"
 
+#include "cli/options.hpp"
 #include "cli/conform_report.hpp"
 #include "cli/report.hpp"
 #include "conform/candidate.hpp"
 #include "conform/conform.hpp"
-#include "conform/engines.hpp"
+#include "engines/registry.hpp"
 #include "conform/expect.hpp"
 #include "formats/output_file.hpp"
 #include "pictures/progress.hpp"
@@ -15,6 +16,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <random>
 #include <span>
 #include <stdexcept>
 #include <tuple>
@@ -52,7 +54,7 @@ Verdict verdict_of(const ConformCommandOptions& given, const conform::Options& o
   try {
     std::unique_ptr<conform::Candidate> candidate;
     if (given.exec.empty())
-      candidate = std::make_unique<conform::EngineCandidate>(conform::engine(given.engine), given.threads);
+      candidate = std::make_unique<conform::EngineCandidate>(engines::engine(given.engine), given.threads);
     else
       candidate = std::make_unique<conform::ProcessCandidate>(
           given.exec, std::chrono::milliseconds(static_cast<long long>(std::ceil(given.timeout * 1000))));
@@ -110,6 +112,76 @@ class ConformProgress {
 
 }  // namespace
 
+CLI::App* add_conform_command(CLI::App& app, ConformCommandOptions& options) {
+  options.seed = std::random_device{}();
+  CLI::App* conform = app.add_subcommand(
+      "conform",
+      "Check an engine (--engine) or any program speaking the step protocol (--exec) against the oracle; exits 0 "
+      "(conforms), 1 (a counterexample) or 2 (cannot check) (docs/conform.md)");
+  add_engine_options(conform, options.engine, options.threads);
+  conform->add_option("--exec", options.exec,
+                      "Check this program instead, run as /bin/sh -c COMMAND (docs/protocol.md)");
+  conform
+      ->add_option("--level", options.level,
+                   "exact (the nearest double), faithful (1 ulp) or ulps:K; decisions always exact")
+      ->capture_default_str();
+  // --cases and --case up to 2^63 - 1, as the counts of run and vectors: CLI11 reads "-1" as 2^64 - 1 (strtoull),
+  // which as --cases would run for ever and as --case would check no case at all (I + 1 wraps to 0) and conform.
+  constexpr std::uint64_t kMaxCases = std::numeric_limits<std::int64_t>::max();
+  conform->add_option("--cases", options.cases, "Worlds to check")
+      ->capture_default_str()
+      ->check(CLI::Range(std::uint64_t{0}, kMaxCases));
+  conform->add_option("--seed", options.seed, "Seed of the worlds (default: a random one, printed)");
+  conform->add_option("--steps", options.steps, "Steps chained per world, the candidate fed its own answers")
+      ->capture_default_str()
+      ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1000000}));
+  conform->add_option("--profile", options.profile,
+                       "resolved, or literal (only worlds where the seed's step is defined, checked against it)")
+      ->capture_default_str();
+  conform->add_option("--shard", options.shard,
+                      "Check only the rounds q (of one case per family) with q mod n == i, for parallel jobs")
+      ->capture_default_str();
+  conform->add_option("--save", options.save,
+                      "Replay every counterexample stored in DIR first, and store a new one there (with its picture)");
+  conform->add_option("--svg", options.svg,
+                      "Draw a counterexample's picture in FILE (default: beside it in --save DIR, else none)");
+  conform->add_option("--timeout", options.timeout,
+                      "Seconds to wait for each answer, up to 512 circles; (n/512)^2 times as long for n circles above")
+      ->capture_default_str()
+      ->check(CLI::Range(0.001, 3600.0));
+  conform->add_option("--max-circles", options.max_circles,
+                      "The most circles of a big world (docs/conform.md, Big worlds): 4097 crosses every power of two "
+                      "up to 4096; fast programs go to 100000 or more")
+      ->capture_default_str()
+      ->check(CLI::Range(circles::properties::kMinMaxCircles, std::size_t{1} << 31));
+  conform->add_option("--case", options.only_case, "Check only this case (to replay a counterexample)")
+      ->check(CLI::Range(std::uint64_t{0}, kMaxCases));
+  conform->add_option("--report", options.report,
+                      "Also write the verdict as JSON to FILE (docs/conform.md, Reports for CI)");
+  conform->add_option("--junit", options.junit,
+                      "Also write the verdict as JUnit XML to FILE, a test case per family");
+  conform->add_flag("--keep-going", options.keep_going,
+                    "Check every family, shrink a counterexample per failing family, and print a row per family");
+  CLI::Option* families_option = conform->add_option("--families", options.families,
+                                                     "Check only these families, A,B,... (docs/conform.md)");
+  conform->add_option("--skip-families", options.skip_families, "Check every family but these, A,B,...")
+      ->excludes(families_option);
+  conform->add_option("--expect", options.expect,
+                      "Known failures, FAMILY fail REASON a line: failing them passes, passing them fails (implies "
+                      "--keep-going)");
+  conform->add_option("--write-expect", options.write_expect,
+                      "Write this run's failing families to FILE as an expectation file (implies --keep-going)");
+  return conform;
+}
+
+void note_given(const CLI::App& conform, ConformCommandOptions& options) {
+  options.engine_given = conform.count("--engine") > 0;
+  options.threads_given = conform.count("--threads") > 0;
+  options.case_given = conform.count("--case") > 0;
+  options.families_given = conform.count("--families") > 0;
+  options.skip_families_given = conform.count("--skip-families") > 0;
+}
+
 int conform_command(const ConformCommandOptions& given, std::ostream& out, std::ostream& err) {
   conform::Options options;
   try {
@@ -154,7 +226,7 @@ int conform_command(const ConformCommandOptions& given, std::ostream& out, std::
     progress.finish();
     err << "circles conform: " << e.what() << "\n";
     return 2;
-  } catch (const conform::UnknownEngine& e) {  // the program's --engine refuses it while parsing
+  } catch (const engines::UnknownEngine& e) {  // the program's --engine refuses it while parsing
     progress.finish();
     err << "circles conform: " << e.what() << "\n";
     return 2;

@@ -1,12 +1,14 @@
 // `circles conform`: the options as the command line gave them, and the command itself (docs/conform.md).
 //
-// main() only declares the options (CLI11) and calls conform_command; everything after parsing is here, so that
-// tests run the command in process: the checks of the options' values and of the options that exclude each
+// add_conform_command declares the options (CLI11) and conform_command runs the command; everything after parsing
+// is the latter, so that tests run the command in process: the checks of the options' values and of the options that exclude each
 // other, the expectation file, the candidate (an engine or a program), conform::check, the expectations
 // applied, the verdict printed (cli/conform_report.hpp) and the reports for CI written (cli/report.hpp).
 #pragma once
 
 #include "properties/boundaries.hpp"
+
+#include <CLI/CLI.hpp>
 
 #include <cstddef>
 #include <cstdint>
@@ -18,7 +20,7 @@ namespace circles::cli {
 // What the command line gave, as given: the strings unparsed, and which options were given at all where that
 // matters (an --engine given with --exec is refused, and the default engine is not).
 struct ConformCommandOptions {
-  std::string engine = "double";  // --engine NAME, one of conform/engines.hpp
+  std::string engine = "double";  // --engine NAME, one of engines/registry.hpp
   bool engine_given = false;
   unsigned threads = 0;           // --threads T of the engine (0: all cores)
   bool threads_given = false;
@@ -46,6 +48,11 @@ struct ConformCommandOptions {
   std::string write_expect;       // --write-expect FILE ("" for none); implies keep_going
   std::ostream* progress = nullptr;  // where a run longer than 2 s draws its progress line (a terminal), or none
 };
+
+// Declares the command and its options on `app`; the seed's default is a random one.
+CLI::App* add_conform_command(CLI::App& app, ConformCommandOptions& options);
+// After parsing: which of the options whose absence matters `conform` was given (the *_given fields).
+void note_given(const CLI::App& conform, ConformCommandOptions& options);
 
 // The command. Prints the verdict on `out` (or, when it cannot check, its reason on `err`), then the unexpected
 // passes of --expect and "expectations: FILE" for --write-expect, and writes the reports, each whole or not at

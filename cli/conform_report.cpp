@@ -1,7 +1,7 @@
 #include "cli/conform_report.hpp"
 
 #include "formats/json_number.hpp"
-#include "conform/corpus.hpp"  // write_atomically
+#include "formats/output_file.hpp"
 #include "pictures/counterexample_svg.hpp"
 
 #include <algorithm>
@@ -96,8 +96,9 @@ void draw_picture(const Verdict& v, const std::filesystem::path& svg, std::ostre
   const properties::Difference& d = c.difference;
   if (const std::filesystem::path file = picture_path(v, svg); !file.empty()) {
     try {
-      conform::write_atomically(file, pictures::counterexample_svg({c.input, c.expected, c.actual, d.circle,
-                                                                    v.options.profile, head_lines(v)}));
+      formats::write_file(file.string(), file.string(),
+                          pictures::counterexample_svg(
+                              {c.input, c.expected, c.actual, d.circle, v.options.profile, head_lines(v)}));
       out << "picture: " << file.string() << "\n";
     } catch (const std::exception& e) {
       out << "picture: not drawn: " << e.what() << "\n";

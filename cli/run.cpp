@@ -1,13 +1,11 @@
 #include "cli/run.hpp"
 
-#include "properties/chain.hpp"
-
 #include "formats/json_number.hpp"
 #include "formats/trace_writer.hpp"
 #include "pictures/progress.hpp"
 #include "formats/protocol.hpp"
 #include "pictures/render.hpp"
-#include "cli/vectors.hpp"  // append_exact_world
+#include "formats/vectors.hpp"  // append_exact_line
 #include "pictures/video.hpp"
 
 #include <algorithm>
@@ -25,13 +23,64 @@ using namespace circles::pictures;
 
 using Clock = std::chrono::steady_clock;
 
-void append_exact_line(std::string& out, std::uint64_t step, const spec::Sequence& w) {
-  out += "{\"step\":";
-  out += std::to_string(step);
-  out += ",\"circles\":";
-  append_exact_world(out, w);
-  out += '}';
+namespace {
+
+// --fit's first pass: the same engine stepped from w_0 without drawing, for the box of every frame's circles (the
+// engines are deterministic, so the run's pass meets the same worlds).
+View fitted_view(const Circles& world, const RunOptions& options, Progress& progress) {
+  Box box;
+  box.add(world);
+  const auto stepper = options.engine->start(world, options.threads);
+  while (stepper->steps() < options.steps) {
+    try {
+      stepper->step();
+    } catch (const StepOverflow&) {
+      break;  // the run's pass stops at the same step and reports it
+    }
+    if (stepper->steps() % options.every == 0) box.add(stepper->circles());
+    progress.update(0, stepper->steps(), Clock::now());
+  }
+  return View::fit(box);
 }
+
+// Frame t of world `w` drawn, and written as a PNG and as the video's next frame where asked.
+void draw(Frame& frame, const Circles& w, const View& view, std::uint64_t t, std::optional<FrameDirectory>& frames,
+          std::optional<Video>& video, RunResult& result) {
+  auto begin = Clock::now();
+  frame.draw(w, view);
+  auto end = Clock::now();
+  result.drawing += end - begin;
+  if (frames) {
+    begin = end;
+    frames->write(frame, t);
+    end = Clock::now();
+    result.png += end - begin;
+  }
+  if (video) {
+    begin = end;
+    video->add(frame);
+    result.video += Clock::now() - begin;
+  }
+  ++result.frames;
+}
+
+// The outputs renamed into place (the video: ffmpeg waited for), each timed with its own figure.
+void commit(std::optional<OutputFile>& trace, std::optional<OutputFile>& exact_trace, std::optional<Video>& video,
+            RunResult& result) {
+  if (trace) {
+    const auto begin = Clock::now();
+    trace->commit();
+    result.tracing += Clock::now() - begin;
+  }
+  if (exact_trace) exact_trace->commit();
+  if (video) {
+    const auto begin = Clock::now();
+    video->commit();
+    result.video += Clock::now() - begin;
+  }
+}
+
+}  // namespace
 
 RunResult run(Circles world, const RunOptions& options) {
   if (options.every == 0) throw std::invalid_argument("RunOptions::every: a frame every 0 steps");
@@ -55,19 +104,7 @@ RunResult run(Circles world, const RunOptions& options) {
   View view = View::pixels();
   if (fit) {
     const auto fit_start = Clock::now();
-    Box box;
-    box.add(world);
-    const auto stepper = options.engine->start(world, options.threads);
-    while (stepper->steps() < options.steps) {
-      try {
-        stepper->step();
-      } catch (const StepOverflow&) {
-        break;  // the run below stops at the same step and reports it
-      }
-      if (stepper->steps() % options.every == 0) box.add(stepper->circles());
-      progress.update(0, stepper->steps(), Clock::now());
-    }
-    view = View::fit(box);
+    view = fitted_view(world, options, progress);
     result.fitting = Clock::now() - fit_start;
   }
 
@@ -91,23 +128,7 @@ RunResult run(Circles world, const RunOptions& options) {
       line += '\n';
       exact_trace->write(line);
     }
-    auto begin = Clock::now();
-    if (!pictures || t % options.every != 0) return;
-    frame->draw(w ? *w : stepper.circles(), view);
-    auto end = Clock::now();
-    result.drawing += end - begin;
-    if (frames) {
-      begin = end;
-      frames->write(*frame, t);
-      end = Clock::now();
-      result.png += end - begin;
-    }
-    if (video) {
-      begin = end;
-      video->add(*frame);
-      result.video += Clock::now() - begin;
-    }
-    ++result.frames;
+    if (pictures && t % options.every == 0) draw(*frame, w ? *w : stepper.circles(), view, t, frames, video, result);
   };
 
   const auto stepper = options.engine->start(world, options.threads);
@@ -134,17 +155,7 @@ RunResult run(Circles world, const RunOptions& options) {
     }
   }
   result.work = stepper->work();
-  if (trace) {
-    const auto begin = Clock::now();
-    trace->commit();
-    result.tracing += Clock::now() - begin;
-  }
-  if (exact_trace) exact_trace->commit();
-  if (video) {
-    const auto begin = Clock::now();
-    video->commit();
-    result.video += Clock::now() - begin;
-  }
+  commit(trace, exact_trace, video, result);
   progress.finish();
   result.total = Clock::now() - started;
   return result;
@@ -252,55 +263,6 @@ void print_stats(const RunResult& result, std::size_t circles, const RunOptions&
     out << ")\n";
   }
   out << "total: " << figure(result.total.count()) << " s\n";
-}
-
-Comparison compare_with_oracle(const EngineEntry& engine, const Circles& world, std::uint64_t steps, unsigned threads) {
-  const auto oracle = reference(engine, world);
-  const auto candidate = engine.start(world, threads);
-  // The engine's worlds as a chain's answers (properties/chain.hpp), each against the oracle's, compared by value
-  // (-0 == +0, every field exactly): the oracle keeps its own sequence, the same worlds while the two agree.
-  properties::Chain chain(world, steps);
-  Comparison c;
-  for (; c.steps < steps; ++c.steps) {
-    const std::uint64_t step = c.steps + 1;
-    std::optional<StepOverflow> expected, actual;
-    try {
-      oracle->step();
-    } catch (const StepOverflow& e) {
-      expected = e;
-    }
-    try {
-      candidate->step();
-    } catch (const StepOverflow& e) {
-      actual = e;
-    }
-    if (expected || actual) {
-      if (expected && actual && expected->index == actual->index && expected->field == actual->field) {
-        c.overflow = expected;
-      } else {
-        c.difference = "step " + std::to_string(step) + ": " +
-                       (expected ? "the oracle stops at " + overflow_reason(expected->index, expected->field)
-                                 : std::string("the oracle does not overflow")) +
-                       ", the engine " +
-                       (actual ? "stops at " + overflow_reason(actual->index, actual->field) : "does not");
-      }
-      return c;
-    }
-    Circles want = oracle->circles(), got = candidate->circles();
-    if (want.size() != got.size()) {
-      c.difference = "step " + std::to_string(step) + ": the oracle has " + std::to_string(want.size()) +
-                     " circles, the engine " + std::to_string(got.size());
-      return c;
-    }
-    if (!chain.judge(std::move(got), std::move(want))) {
-      const properties::Difference& d = chain.failure()->difference;
-      c.difference = "step " + std::to_string(step) + ", circle " + std::to_string(d.circle) + ", field " +
-                     spec::name(spec::Field(d.field)) + ": oracle " + json_number::decimal_and_hex(d.expected) +
-                     ", engine " + json_number::decimal_and_hex(d.actual);
-      return c;
-    }
-  }
-  return c;
 }
 
 void print_comparison(const EngineEntry& engine, const Comparison& c, std::ostream& out) {

@@ -1,8 +1,10 @@
-// `circles run` and the main job's check: an engine stepping a world many times, with a trace, PNG frames and a
-// video if asked (docs/run.md), and an engine stepped side by side with the oracle.
+// `circles run` and the main job's printing: an engine stepping a world many times, with a trace, PNG frames and a
+// video if asked (docs/run.md), and the line of an engine stepped side by side with the oracle
+// (conform::compare_with_oracle).
 #pragma once
 
-#include "conform/engines.hpp"
+#include "conform/check_trace.hpp"  // Comparison
+#include "engines/registry.hpp"
 #include "formats/output_file.hpp"
 #include "formats/scene.hpp"
 #include "spec/circle.hpp"
@@ -19,6 +21,7 @@ namespace circles::cli {
 // The program's layer names the libraries' types and functions unqualified.
 using namespace circles::formats;
 using namespace circles::conform;
+using namespace circles::engines;
 
 // A trace that cannot be written: what() names the file and the system's reason (formats/output_file.hpp).
 using TraceError = OutputError;
@@ -71,10 +74,6 @@ struct RunResult {
 // w_0, which for a big world is memory the steps can use.
 RunResult run(Circles world, const RunOptions& options);
 
-// {"step":t,"circles":[["px","py","vx","vy","r"],...]} without a newline, each number the exact "n/d" of
-// cli::fraction (cli::append_exact_world): a line of --exact-trace.
-void append_exact_line(std::string& out, std::uint64_t step, const spec::Sequence& w);
-
 // "100 steps of 10 circles with the double engine (all cores): 0.000135 s stepping, 135 ns per circle-step",
 // then a line for each output: "trace: t.jsonl (w_0 to w_100, 101 lines)", "frames: f/frame-000000.png to
 // f/frame-000099.png (34, every 3 steps)", "video: v.mp4 (34 frames at 60 frames/s, 0.566667 s)".
@@ -93,16 +92,6 @@ void print_work(const impl::EngineStats& work, std::size_t circles, std::ostream
 // in that order, one a line (down the first column, then the second, then the third); an engine of impl/
 // adds print_work's lines after "ns per circle-step".
 void print_stats(const RunResult& result, std::size_t circles, const RunOptions& options, std::ostream& out);
-
-// `engine` and the oracle stepped side by side from w_0 = `world` for `steps` steps, compared by value after
-// each step (-0 == +0).
-struct Comparison {
-  std::uint64_t steps = 0;                // steps after which both agreed
-  std::optional<std::string> difference;  // the first difference: "step 5, circle 3, field vx: oracle 120
-                                          // (0x1.ep+6), engine 0 (0x0p+0)"
-  std::optional<StepOverflow> overflow;   // both stopped at this same overflow
-};
-Comparison compare_with_oracle(const EngineEntry& engine, const Circles& world, std::uint64_t steps, unsigned threads);
 
 // One line: "double engine: agrees with the correctly rounded oracle at each of the 100 steps" or "double
 // engine: DIFFERS from the correctly rounded oracle at step 5, circle 3, field vx: ...".

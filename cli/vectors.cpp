@@ -1,195 +1,24 @@
 #include "cli/vectors.hpp"
 
-#include "properties/boundaries.hpp"
-
-#include "cli/report.hpp"
-
-#include "conform/conform.hpp"
-#include "formats/json_number.hpp"
-#include "formats/output_file.hpp"
 #include "formats/scene.hpp"
-#include "impl/state_hash.hpp"
-#include "properties/boundaries.hpp"
-#include "properties/features.hpp"
-
-#include <nlohmann/json.hpp>
-
-#include <algorithm>
-#include <cmath>
-#include <filesystem>
-#include <system_error>
 
 namespace circles::cli {
 
-using conform::case_worlds;
-namespace {
-
-namespace fs = std::filesystem;
-
-std::vector<spec::Circle> exact_circles(const Circles& w) { return spec::from_doubles(w, spec::Radii::non_negative); }
-
-// [[a, b, c, d, e], ...] with each value written by `write`.
-template <class Rows, class Write>
-void append_rows(std::string& out, const Rows& rows, Write write) {
-  out += '[';
-  for (std::size_t k = 0; k < rows.size(); ++k) {
-    out += k ? ",[" : "[";
-    for (std::size_t j = 0; j < 5; ++j) {
-      if (j) out += ',';
-      write(out, rows[k], j);
-    }
-    out += ']';
-  }
-  out += ']';
-}
-
-void append_decimal(std::string& out, const std::array<double, 5>& c, std::size_t j) { json_number::append(out, c[j]); }
-
-void append_hex(std::string& out, const std::array<double, 5>& c, std::size_t j) {
-  out += '"';
-  out += json_number::hex(c[j]);
-  out += '"';
-}
-
-void append_fraction(std::string& out, const spec::Circle& c, std::size_t j) {
-  const spec::Q* fields[] = {&c.p.x(), &c.p.y(), &c.v.x(), &c.v.y(), &c.r};
-  out += '"' + fraction(*fields[j]) + '"';
-}
-
-// The scene files of `dir`: every regular *.json file, in name order.
-std::vector<fs::path> scene_files(const std::string& dir) {
-  std::error_code error;
-  fs::directory_iterator it(dir, error);
-  if (error)
-    throw VectorsError(dir + ": cannot read the scenes directory: " + error.message() +
-                       " (the bundled scenes are scenes/ in the repository: run from its root or give --scenes DIR)");
-  std::vector<fs::path> files;
-  for (const fs::directory_entry& entry : it)
-    if (entry.path().extension() == ".json" && entry.is_regular_file(error)) files.push_back(entry.path());
-  std::sort(files.begin(), files.end());
-  return files;
-}
-
-}  // namespace
-
-std::string fraction(const spec::Q& q) {
-  return boost::multiprecision::numerator(q).str() + "/" + boost::multiprecision::denominator(q).str();
-}
-
-void append_exact_world(std::string& out, const std::vector<spec::Circle>& w) { append_rows(out, w, append_fraction); }
-
-std::vector<std::string> features_of(const Circles& w) {
-  const std::vector<spec::Circle> exact = exact_circles(w);
-  const properties::Features f = properties::features(exact);
-  bool choice = false;
-  for (std::size_t k = 0; k < exact.size() && !choice; ++k) {
-    int contacts = 0;
-    for (std::size_t j = 0; j < exact.size(); ++j) contacts += j != k && spec::intersect(exact[k], exact[j]);
-    choice = contacts >= 2;
-  }
-  std::vector<std::string> names;
-  for (const auto& [holds, name] : {std::pair{f.contact, "contact"}, std::pair{f.tangency, "tangency"},
-                                    std::pair{choice, "choice"}, std::pair{f.tie, "tie"},
-                                    std::pair{f.duplicate, "duplicate"}, std::pair{f.zero_radius, "zero_radius"}})
-    if (holds) names.push_back(name);
-  return names;
-}
-
-std::optional<Vector> make_vector(const Circles& input) {
-  Vector v;
-  v.input = input;
-  v.next_exact = spec::resolved_step(exact_circles(input));
-  for (const spec::Circle& c : v.next_exact) {
-    v.next.push_back(spec::nearest_doubles(c));
-    if (!std::isfinite(v.next.back()[0]) || !std::isfinite(v.next.back()[1])) return std::nullopt;
-  }
-  v.features = features_of(input);
-  return v;
-}
-
-std::string format_vector(std::size_t index, const Vector& v) {
-  std::string out = "{\"case\":" + std::to_string(index) + ",\"source\":";
-  if (v.scene)
-    out += "{\"scene\":" + json_string(*v.scene) + ",\"step\":" + std::to_string(v.step) + "}";
-  else
-    out += "{\"seed\":" + std::to_string(v.seed) + ",\"case\":" + std::to_string(v.case_index) + "}";
-  out += ",\"features\":[";
-  for (std::size_t k = 0; k < v.features.size(); ++k) out += (k ? ",\"" : "\"") + v.features[k] + "\"";
-  out += "],\"input\":";
-  append_rows(out, v.input, append_decimal);
-  out += ",\"input_hex\":";
-  append_rows(out, v.input, append_hex);
-  out += ",\"input_hash\":\"" + hash_text(impl::state_hash(v.input)) + "\",\"next_exact\":";
-  append_exact_world(out, v.next_exact);
-  out += ",\"next\":";
-  append_rows(out, v.next, append_decimal);
-  out += ",\"next_hex\":";
-  append_rows(out, v.next, append_hex);
-  out += ",\"next_hash\":\"" + hash_text(impl::state_hash(v.next)) + "\"}";
-  return out;
-}
-
-VectorsSummary write_vectors(const VectorsOptions& options) {
-  VectorsSummary summary;
-  // The inputs and the output directory first, so that a wrong --scenes or --out is reported before any work
-  // and a missing scenes directory leaves no output directory behind.
-  const std::vector<fs::path> scenes = scene_files(options.scenes);
-  std::error_code error;
-  if (fs::exists(options.out, error) && !fs::is_directory(options.out, error))
-    throw VectorsError(options.out + ": cannot create the output directory: a file of that name is in the way");
-  fs::create_directories(options.out, error);
-  if (error) throw VectorsError(options.out + ": cannot create the output directory: " + error.message());
-
-  std::vector<Vector> vectors;
-  // The scenes: w_0 from the file, then each next world the correctly rounded step of the one before.
-  for (const fs::path& file : scenes) {
-    ++summary.scenes;
-    Circles world = doubles_of(load_scene(file.string()));
-    for (std::uint64_t step = 0; step < options.scene_steps; ++step) {
-      std::optional<Vector> v = make_vector(world);
-      if (!v) {
-        ++summary.skipped;
-        break;  // no later world of this scene exists in doubles
-      }
-      v->scene = file.filename().string();
-      v->step = step;
-      world = v->next;
-      vectors.push_back(std::move(*v));
-      ++summary.scene_cases;
-    }
-  }
-  // conform's worlds: the same case c of a seed as `circles conform --seed S --case c` checks, for the small
-  // families; a big family's world (hundreds to thousands of circles, properties/boundaries.hpp) is left to
-  // conform, which judges it with a fast reference, where the oracle would take minutes over each.
-  const std::vector<Circles> worlds = case_worlds(options.seed, options.cases);
-  const auto families = properties::families(properties::Profile::resolved);
-  for (std::uint64_t c = 0; c < worlds.size(); ++c) {
-    if (properties::is_big(families[c % families.size()])) continue;
-    std::optional<Vector> v = make_vector(worlds[c]);
-    if (!v) {
-      ++summary.skipped;
-      continue;
-    }
-    v->seed = options.seed;
-    v->case_index = c;
-    vectors.push_back(std::move(*v));
-  }
-
-  std::string content;
-  for (std::size_t i = 0; i < vectors.size(); ++i) {
-    content += format_vector(i, vectors[i]) + '\n';
-    for (const std::string& f : vectors[i].features) ++summary.features[f];
-  }
-  summary.file = (fs::path(options.out) / kVectorsFile).string();
-  try {  // beside its place and renamed into it: DIR never holds a half-written file
-    OutputFile file(summary.file, summary.file);
-    file.write(content);
-    file.commit();
-  } catch (const OutputError& e) {
-    throw VectorsError(e.what());
-  }
-  summary.written = vectors.size();
-  return summary;
+CLI::App* add_vectors_command(CLI::App& app, VectorsOptions& options) {
+  CLI::App* vectors = app.add_subcommand(
+      "vectors", "Write golden test vectors for other languages to DIR/vectors.jsonl (docs/vectors.md)");
+  vectors->add_option("--out", options.out, "The directory of vectors.jsonl (created if missing)")->required();
+  // Ranges as for --steps: CLI11 reads "-5" as 2^64 - 5, which they refuse.
+  vectors->add_option("--cases", options.cases, "Generated worlds: conform's cases 0 to N-1 of the seed")
+      ->capture_default_str()
+      ->check(CLI::Range(std::uint64_t{0}, std::uint64_t{1000000}));
+  vectors->add_option("--seed", options.seed, "Seed of the generated worlds")->capture_default_str();
+  vectors->add_option("--scenes", options.scenes, "Directory of scenes (*.json) whose first worlds are cases")
+      ->capture_default_str();
+  vectors->add_option("--scene-steps", options.scene_steps, "Worlds w_0, w_1, ... taken from each scene")
+      ->capture_default_str()
+      ->check(CLI::Range(std::uint64_t{0}, std::uint64_t{1000000}));
+  return vectors;
 }
 
 int vectors_command(const VectorsOptions& options, std::ostream& out, std::ostream& err) {

@@ -24,8 +24,8 @@ namespace json_number = formats::json_number;
 
 Circles EngineCandidate::answer(const Circles& world, std::uint64_t id) {
   try {
-    return step_once(engine_, world, threads_);
-  } catch (const StepOverflow& e) {
+    return engines::step_once(engine_, world, threads_);
+  } catch (const engines::StepOverflow& e) {
     throw BrokenCandidate("request " + std::to_string(id) + ": " + e.what());
   }
 }
@@ -105,7 +105,6 @@ void ProcessCandidate::restart() {
   buffer_.clear();
   status_.clear();
   unanswered_ = 0;
-  ++restarts_;
   start();
 }
 

@@ -1,6 +1,6 @@
 // A candidate implementation under test: anything that answers the step protocol (docs/protocol.md).
 //
-//   EngineCandidate   one of our engines, in process (conform/engines.hpp).
+//   EngineCandidate   one of our engines, in process (engines/registry.hpp).
 //   ProcessCandidate  any program: started once with `/bin/sh -c COMMAND`, fed request lines on its stdin (a
 //                     batch of them at a time, so that a batch shares one round trip through the pipes), read
 //                     one answer line at a time from its stdout, in order, with a deadline per request.
@@ -10,7 +10,7 @@
 //                     afresh, so that no answer it wrote to an earlier request is read as another's.
 #pragma once
 
-#include "conform/engines.hpp"
+#include "engines/registry.hpp"
 #include "formats/plain_line.hpp"
 #include "formats/protocol.hpp"
 
@@ -75,14 +75,14 @@ class Candidate {
 
 class EngineCandidate : public Candidate {
  public:
-  EngineCandidate(const EngineEntry& engine, unsigned threads) : engine_(engine), threads_(threads) {}
+  EngineCandidate(const engines::EngineEntry& engine, unsigned threads) : engine_(engine), threads_(threads) {}
   // A position beyond the double range is an answer the protocol cannot carry: BrokenCandidate.
   Circles answer(const Circles& world, std::uint64_t id) override;
   std::string name() const override;
   std::string option() const override;
 
  private:
-  const EngineEntry& engine_;
+  const engines::EngineEntry& engine_;
   unsigned threads_;
 };
 
@@ -105,8 +105,6 @@ class ProcessCandidate : public Candidate {
   void finish() override;
   std::string name() const override { return "the program `" + command_ + "`"; }
   std::string option() const override;
-  // How many times the program was started afresh after a fault.
-  std::uint64_t restarts() const { return restarts_; }
 
   // The deadline for the answer to a world of `circles` circles: `deadline` up to kDeadlineCircles circles,
   // and above it `deadline` · (circles / kDeadlineCircles)², as an O(n²) step's time grows: 16 times as long at
@@ -150,7 +148,6 @@ class ProcessCandidate : public Candidate {
   formats::PlainLineReader plain_;
   std::size_t lines_ = 0;
   std::size_t unanswered_ = 0;  // requests written whose answers were not read
-  std::uint64_t restarts_ = 0;
   std::string status_;  // set once the program is reaped
 };
 

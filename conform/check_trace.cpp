@@ -1,6 +1,7 @@
 #include "conform/check_trace.hpp"
 
-#include "conform/engines.hpp"
+#include "engines/registry.hpp"
+#include "formats/json_number.hpp"
 #include "impl/engine.hpp"
 #include "impl/exact_grid_reference.hpp"
 #include "impl/grid_reference.hpp"
@@ -37,7 +38,7 @@ class Reference {
       exact_->step();
       return exact_->rounded();
     } catch (const impl::PositionOverflow& e) {
-      overflow = overflow_reason(e.index, std::string_view(e.field) == "px" ? spec::Field::px : spec::Field::py);
+      overflow = engines::overflow_reason(e.index, std::string_view(e.field) == "px" ? spec::Field::px : spec::Field::py);
       return std::nullopt;
     }
   }
@@ -86,6 +87,55 @@ TraceCheck check_trace(TraceReader& reader, TraceReference kind) {
   check.last_hash = impl::state_hash(chain.failure() ? chain.failure()->input : chain.input());
   check.trajectory_hash = trajectory.value();
   return check;
+}
+
+Comparison compare_with_oracle(const engines::EngineEntry& engine, const Circles& world, std::uint64_t steps, unsigned threads) {
+  const auto oracle = engines::reference(engine, world);
+  const auto candidate = engine.start(world, threads);
+  // The engine's worlds as a chain's answers (properties/chain.hpp), each against the oracle's, compared by value
+  // (-0 == +0, every field exactly): the oracle keeps its own sequence, the same worlds while the two agree.
+  properties::Chain chain(world, steps);
+  Comparison c;
+  for (; c.steps < steps; ++c.steps) {
+    const std::uint64_t step = c.steps + 1;
+    std::optional<engines::StepOverflow> expected, actual;
+    try {
+      oracle->step();
+    } catch (const engines::StepOverflow& e) {
+      expected = e;
+    }
+    try {
+      candidate->step();
+    } catch (const engines::StepOverflow& e) {
+      actual = e;
+    }
+    if (expected || actual) {
+      if (expected && actual && expected->index == actual->index && expected->field == actual->field) {
+        c.overflow = expected;
+      } else {
+        c.difference = "step " + std::to_string(step) + ": " +
+                       (expected ? "the oracle stops at " + engines::overflow_reason(expected->index, expected->field)
+                                 : std::string("the oracle does not overflow")) +
+                       ", the engine " +
+                       (actual ? "stops at " + engines::overflow_reason(actual->index, actual->field) : "does not");
+      }
+      return c;
+    }
+    Circles want = oracle->circles(), got = candidate->circles();
+    if (want.size() != got.size()) {
+      c.difference = "step " + std::to_string(step) + ": the oracle has " + std::to_string(want.size()) +
+                     " circles, the engine " + std::to_string(got.size());
+      return c;
+    }
+    if (!chain.judge(std::move(got), std::move(want))) {
+      const properties::Difference& d = chain.failure()->difference;
+      c.difference = "step " + std::to_string(step) + ", circle " + std::to_string(d.circle) + ", field " +
+                     spec::name(spec::Field(d.field)) + ": oracle " + formats::json_number::decimal_and_hex(d.expected) +
+                     ", engine " + formats::json_number::decimal_and_hex(d.actual);
+      return c;
+    }
+  }
+  return c;
 }
 
 }  // namespace circles::conform

@@ -1,5 +1,6 @@
-// The check of `circles check-trace FILE [--engine double|exact]` (printed by cli/check_trace_command.hpp):
-// checks a trace recorded by any implementation
+// Worlds checked step by step against the spec: the main job's engines beside the oracle (compare_with_oracle,
+// printed by cli/run.hpp), and the check of `circles check-trace FILE [--engine double|exact]` (printed by
+// cli/check_trace_command.hpp), which checks a trace recorded by any implementation
 // (formats/trace_reader.hpp) step by step against the spec, and names the first step, circle and field that differ
 // (docs/vectors.md, "Checking a trace").
 //
@@ -17,6 +18,7 @@
 #pragma once
 
 #include "conform/conform.hpp"
+#include "engines/registry.hpp"
 #include "formats/trace_reader.hpp"
 
 #include <cstddef>
@@ -58,5 +60,17 @@ struct TraceCheck {
 // Reads the trace and checks each world as it comes, stopping at the first divergence (the lines after it are
 // not read). Throws TraceReadError for the first line before it that breaks a rule of the reader.
 TraceCheck check_trace(TraceReader& reader, TraceReference reference);
+
+// The main job's check (`circles` with no command), as check_trace's but with the engine stepped in process:
+// `engine` and its reference (engines::reference) stepped side by side from w_0 = `world` for `steps` steps,
+// compared by value after each step (-0 == +0).
+struct Comparison {
+  std::uint64_t steps = 0;                // steps after which both agreed
+  std::optional<std::string> difference;  // the first difference: "step 5, circle 3, field vx: oracle 120
+                                          // (0x1.ep+6), engine 0 (0x0p+0)"
+  std::optional<engines::StepOverflow> overflow;  // both stopped at this same overflow
+};
+Comparison compare_with_oracle(const engines::EngineEntry& engine, const Circles& world, std::uint64_t steps,
+                               unsigned threads);
 
 }  // namespace circles::conform

@@ -3,6 +3,7 @@
 #include "formats/protocol.hpp"  // in_quotes
 
 #include "formats/json_number.hpp"
+#include "formats/json_world.hpp"
 #include "formats/output_file.hpp"
 #include "spec/outside_c.hpp"
 
@@ -18,7 +19,6 @@ namespace circles::conform {
 
 namespace json_number = formats::json_number;
 using formats::OutputError;
-using formats::OutputFile;
 namespace {
 
 constexpr std::string_view kFormat = "circles-counterexample/1";
@@ -27,22 +27,13 @@ constexpr std::string_view kKeys[] = {"format", "profile", "world",  "level",   
 constexpr std::string_view kDifferenceKeys[] = {"circle", "field", "expected", "actual", "decision"};
 
 
-// The world asked and the expected answer are worlds of C; what the candidate answered is any numbers, those
-// that are not finite stored as the strings "NaN", "Infinity" and "-Infinity" (json_number::append_or_string).
-enum class Numbers { of_c, answered };
+// The world asked and the expected answer are worlds of C (Numbers::finite); what the candidate answered is any
+// numbers (Numbers::any), those that are not finite stored as the strings "NaN", "Infinity" and "-Infinity".
+using formats::Numbers;
 
-void append_world(std::string& out, const Circles& w, Numbers numbers = Numbers::of_c) {
-  out += "[";
-  for (std::size_t k = 0; k < w.size(); ++k) {
-    out += k ? ",\n    [" : "\n    [";
-    for (std::size_t f = 0; f < 5; ++f) {
-      if (f) out += ", ";
-      if (numbers == Numbers::answered) json_number::append_or_string(out, w[k][f]);
-      else json_number::append(out, w[k][f]);
-    }
-    out += "]";
-  }
-  out += w.empty() ? "]" : "\n  ]";
+// A world one row a line, indented under its key.
+void append_listed_world(std::string& out, const Circles& w, Numbers numbers = Numbers::finite) {
+  formats::append_world(out, w, numbers, {.row = "\n    ", .field = ", ", .close = "\n  "});
 }
 
 // A JSON number as the double nearest to it, by the rules of formats/json_number.hpp (the parser has refused values
@@ -70,15 +61,15 @@ class Reader {
     return x.get<std::uint64_t>();
   }
 
-  double number(const nlohmann::json& x, const std::string& where, Numbers numbers = Numbers::of_c) const {
+  double number(const nlohmann::json& x, const std::string& where, Numbers numbers = Numbers::finite) const {
     std::optional<double> d = to_double(x);
-    if (!d && numbers == Numbers::answered && x.is_string()) d = json_number::non_finite_token(x.get<std::string>());
+    if (!d && numbers == Numbers::any && x.is_string()) d = json_number::non_finite_token(x.get<std::string>());
     if (!d) fail(where + ": expected a number, found " + x.dump());
     return *d;
   }
 
   // A world of the resolved profile's C: finite doubles, r >= 0; or an answer, any numbers.
-  Circles world(const nlohmann::json& x, std::string_view key, Numbers numbers = Numbers::of_c) const {
+  Circles world(const nlohmann::json& x, std::string_view key, Numbers numbers = Numbers::finite) const {
     const std::string where = "key " + in_quotes(key);
     if (!x.is_array()) fail(where + ": expected an array of circles [px, py, vx, vy, r], found " + x.type_name());
     Circles w;
@@ -90,7 +81,7 @@ class Reader {
       for (std::size_t f = 0; f < 5; ++f)
         fields[f] = number(c[f], circle + ", field " + properties::field_name(static_cast<int>(f)), numbers);
       try {
-        if (numbers == Numbers::of_c) spec::check_doubles(fields, k, spec::Radii::non_negative);
+        if (numbers == Numbers::finite) spec::check_doubles(fields, k, spec::Radii::non_negative);
       } catch (const spec::OutsideC& e) {
         fail(where + ": " + e.what());
       }
@@ -120,7 +111,7 @@ std::string to_json(const StoredCounterexample& c) {
   std::string out = "{\n  \"format\": " + string(std::string(kFormat)) + ",\n";
   out += "  \"profile\": " + string(properties::name(c.profile)) + ",\n";
   out += "  \"world\": ";
-  append_world(out, c.world);
+  append_listed_world(out, c.world);
   out += ",\n";
   if (!c.level.empty()) out += "  \"level\": " + string(c.level) + ",\n";
   if (c.seed) out += "  \"seed\": " + std::to_string(*c.seed) + ",\n";
@@ -137,12 +128,12 @@ std::string to_json(const StoredCounterexample& c) {
   }
   if (!c.expected.empty()) {
     out += "  \"expected\": ";
-    append_world(out, c.expected);
+    append_listed_world(out, c.expected);
     out += ",\n";
   }
   if (!c.actual.empty()) {
     out += "  \"actual\": ";
-    append_world(out, c.actual, Numbers::answered);
+    append_listed_world(out, c.actual, Numbers::any);
     out += ",\n";
   }
   out.erase(out.size() - 2);  // the last ",\n"
@@ -183,7 +174,7 @@ StoredCounterexample from_json(std::string_view text, const std::string& source)
   if (root.contains("steps")) c.steps = read.integer(root["steps"], "steps");
   if (root.contains("step")) c.step = read.integer(root["step"], "step");
   if (root.contains("expected")) c.expected = read.world(root["expected"], "expected");
-  if (root.contains("actual")) c.actual = read.world(root["actual"], "actual", Numbers::answered);
+  if (root.contains("actual")) c.actual = read.world(root["actual"], "actual", Numbers::any);
   if (root.contains("difference")) {
     const nlohmann::json& d = root["difference"];
     if (!d.is_object()) read.fail("key \"difference\": expected an object, found " + std::string(d.type_name()));
@@ -200,7 +191,7 @@ StoredCounterexample from_json(std::string_view text, const std::string& source)
       if (field == properties::field_name(f)) diff.field = f;
     if (diff.field < 0) read.fail("key \"difference\": field " + d["field"].dump() + " is not px, py, vx, vy or r");
     diff.expected = read.number(d["expected"], "key \"difference\": expected");
-    diff.actual = read.number(d["actual"], "key \"difference\": actual", Numbers::answered);
+    diff.actual = read.number(d["actual"], "key \"difference\": actual", Numbers::any);
     diff.decision = read.string(d["decision"], "decision");
     c.difference = diff;
   }
@@ -217,22 +208,16 @@ std::string stem(const StoredCounterexample& c) {
   return "counterexample-" + std::string(hex);
 }
 
-void write_atomically(const std::filesystem::path& file, std::string_view text) {
-  try {
-    OutputFile out(file.string(), file.string());
-    out.write(text);
-    out.commit();
-  } catch (const OutputError& e) {
-    throw CorpusError(e.what());
-  }
-}
-
 std::filesystem::path save(const std::filesystem::path& dir, const StoredCounterexample& c) {
   std::error_code error;
   std::filesystem::create_directories(dir, error);
   if (error) throw CorpusError("cannot create the directory " + dir.string() + ": " + error.message());
   const std::filesystem::path file = dir / (stem(c) + ".json");
-  write_atomically(file, to_json(c));
+  try {
+    formats::write_file(file.string(), file.string(), to_json(c));
+  } catch (const OutputError& e) {
+    throw CorpusError(e.what());
+  }
   return file;
 }
 

@@ -63,8 +63,4 @@ std::filesystem::path save(const std::filesystem::path& dir, const StoredCounter
 // Every DIR/*.json, in order of name. Throws CorpusError for a file that cannot be read or replayed.
 std::vector<std::pair<std::filesystem::path, StoredCounterexample>> load_corpus(const std::filesystem::path& dir);
 
-// Writes `text` to `file` through a temporary file beside it and a rename (formats/output_file.hpp), so that no
-// half-written file is ever seen. Throws CorpusError naming the file.
-void write_atomically(const std::filesystem::path& file, std::string_view text);
-
 }  // namespace circles::conform

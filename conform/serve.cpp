@@ -8,7 +8,7 @@
 namespace circles::conform {
 
 RequestOverflow::RequestOverflow(std::size_t l, std::uint64_t i, std::size_t k, spec::Field f)
-    : std::overflow_error("line " + std::to_string(l) + " (id " + std::to_string(i) + "): " + overflow_reason(k, f)),
+    : std::overflow_error("line " + std::to_string(l) + " (id " + std::to_string(i) + "): " + engines::overflow_reason(k, f)),
       line(l),
       id(i),
       index(k),
@@ -16,8 +16,8 @@ RequestOverflow::RequestOverflow(std::size_t l, std::uint64_t i, std::size_t k, 
 
 namespace {
 
-StepFunction engine_step(const EngineEntry& engine, unsigned threads) {
-  return [&engine, threads](const Circles& w) { return step_once(engine, w, threads); };
+StepFunction engine_step(const engines::EngineEntry& engine, unsigned threads) {
+  return [&engine, threads](const Circles& w) { return engines::step_once(engine, w, threads); };
 }
 
 }  // namespace
@@ -26,16 +26,16 @@ std::string answer(const StepFunction& step, std::string_view request, std::size
   const Line in = parse_line(request, line_number);
   try {
     return format_line(kId, in.number, step(in.circles));
-  } catch (const StepOverflow& e) {
+  } catch (const engines::StepOverflow& e) {
     throw RequestOverflow(line_number, in.number, e.index, e.field);
   }
 }
 
-std::string answer(const EngineEntry& engine, unsigned threads, std::string_view request, std::size_t line_number) {
+std::string answer(const engines::EngineEntry& engine, unsigned threads, std::string_view request, std::size_t line_number) {
   return answer(engine_step(engine, threads), request, line_number);
 }
 
-int serve(const EngineEntry& engine, unsigned threads, std::istream& in, std::ostream& out, std::ostream& err) {
+int serve(const engines::EngineEntry& engine, unsigned threads, std::istream& in, std::ostream& out, std::ostream& err) {
   return serve(engine_step(engine, threads), in, out, err);
 }
 

@@ -2,7 +2,7 @@
 // checker can test it: one request per line on the input, one flushed response line each.
 #pragma once
 
-#include "conform/engines.hpp"
+#include "engines/registry.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -40,12 +40,12 @@ using StepFunction = std::function<Circles(const Circles&)>;
 // The response line (without its newline) to one request line, number `line_number`: what serve writes for
 // it. Throws ProtocolError for a malformed request and RequestOverflow.
 std::string answer(const StepFunction& step, std::string_view request, std::size_t line_number);
-std::string answer(const EngineEntry& engine, unsigned threads, std::string_view request, std::size_t line_number);
+std::string answer(const engines::EngineEntry& engine, unsigned threads, std::string_view request, std::size_t line_number);
 
 // Answers every line of `in` on `out`, flushing each response, until the end of `in`. Returns the exit code:
 // 0 at the end of the input, 2 after a malformed request or an overflow, which it names on `err` (nothing is
 // written to `out` for that line, and the lines after it are not read).
 int serve(const StepFunction& step, std::istream& in, std::ostream& out, std::ostream& err);
-int serve(const EngineEntry& engine, unsigned threads, std::istream& in, std::ostream& out, std::ostream& err);
+int serve(const engines::EngineEntry& engine, unsigned threads, std::istream& in, std::ostream& out, std::ostream& err);
 
 }  // namespace circles::conform

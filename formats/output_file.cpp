@@ -53,6 +53,12 @@ void OutputFile::commit() {
   temp_.clear();
 }
 
+void write_file(const std::string& path, const std::string& what, std::string_view text) {
+  OutputFile file(path, what);
+  file.write(text);
+  file.commit();
+}
+
 void OutputFile::discard() noexcept {
   if (file_) std::fclose(std::exchange(file_, nullptr));
   if (!temp_.empty()) std::remove(temp_.c_str());

@@ -47,4 +47,8 @@ class OutputFile {
   std::FILE* file_ = nullptr;
 };
 
+// Writes `text` to `path` whole or not at all, through an OutputFile: the one way the suite writes a file it
+// holds in memory (reports, corpus files, pictures, vectors). Throws OutputError, its message opened by `what`.
+void write_file(const std::string& path, const std::string& what, std::string_view text);
+
 }  // namespace circles::formats

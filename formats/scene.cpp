@@ -353,23 +353,6 @@ std::size_t physical_memory() {
   return static_cast<std::size_t>(pages) * static_cast<std::size_t>(page);
 }
 
-// The peak resident memory of each command on random scenes (/usr/bin/time's maximum resident set size, less
-// the 8 MB of an empty run), divided by the circles, on Debian 12 x86-64 with glibc's malloc:
-//   run --engine double   207-210 bytes (1e6 and 4e6 circles, 1 to 20 steps, 1 or 2 threads): the engine's
-//                         five arrays, their next-step copies, its cell keys and index arrays, and the scene
-//   run --engine exact    370 bytes (1e6 circles): integers over a common denominator, wider than doubles
-//   run --engine oracle   1560 bytes (4000 circles, 1 step): the exact rationals of two worlds
-//   oracle                4250 bytes (4000 circles, 1 step; 3500 for the scene alone): the oracle's report
-//                         holds both profiles' worlds as rationals
-// Each bound below is the figure with 20-40% to spare, rounded to a power of two or to 1 KB, so that a world
-// the check lets through fits; a count between the figure and the bound is refused though it might have
-// fitted, which is the side to err on, since with Linux's overcommit the alternative is the OOM killer.
-std::size_t run_bytes_per_circle(std::string_view engine) {
-  if (engine == "double") return 256;
-  if (engine == "exact") return 512;
-  return 2048;  // the oracle, and any engine not measured
-}
-
 std::vector<std::array<double, 5>> random_world(std::size_t n, double coverage, std::uint64_t seed,
                                                 std::size_t bytes_per_circle) {
   const std::size_t memory = physical_memory();

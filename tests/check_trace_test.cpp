@@ -3,7 +3,7 @@
 // every trace that is not one is refused with its file, line and reason (exit 2), never a crash.
 #include "cli/check_trace_command.hpp"
 #include "conform/check_trace.hpp"
-#include "conform/engines.hpp"
+#include "engines/registry.hpp"
 #include "cli/run.hpp"
 #include "formats/scene.hpp"
 #include "formats/trace_reader.hpp"

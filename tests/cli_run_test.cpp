@@ -1,6 +1,6 @@
-// The engine registry, `circles serve`'s line handling and `circles run`'s trace (conform/engines.hpp,
+// The engine registry, `circles serve`'s line handling and `circles run`'s trace (engines/registry.hpp,
 // conform/serve.hpp, cli/run.hpp), each held to spec::resolved_step_rounded, the correctly rounded oracle step.
-#include "conform/engines.hpp"
+#include "engines/registry.hpp"
 #include "pictures/progress.hpp"
 #include "formats/protocol.hpp"
 #include "cli/run.hpp"
@@ -93,12 +93,12 @@ TEST(engines, names_the_valid_engines_for_an_unknown_name) {
 TEST(engines, each_steps_like_the_rounded_oracle) {
   const Circles want = spec::resolved_step_rounded(kTouching);
   ASSERT_EQ(want[0][2], -1.0) << "the test world must collide";
-  for (const EngineEntry& e : engines())
+  for (const EngineEntry& e : engines::engines())
     for (const unsigned threads : {0u, 1u, 2u}) EXPECT_EQ(step_once(e, kTouching, threads), want) << e.name;
 }
 
 TEST(engines, each_reports_an_overflow_with_its_step_circle_and_field_and_keeps_the_world) {
-  for (const EngineEntry& e : engines()) {
+  for (const EngineEntry& e : engines::engines()) {
     const auto stepper = e.start(kOverflowsAtStep4, 1);
     for (int t = 0; t < 3; ++t) stepper->step();
     const Circles w3 = stepper->circles();
@@ -115,7 +115,7 @@ TEST(engines, each_reports_an_overflow_with_its_step_circle_and_field_and_keeps_
 }
 
 TEST(serve, answers_a_request_with_the_oracles_step_under_the_same_id) {
-  for (const EngineEntry& e : engines())
+  for (const EngineEntry& e : engines::engines())
     EXPECT_EQ(answer(e, 0, format_line(kId, 42, kTouching), 1),
               format_line(kId, 42, spec::resolved_step_rounded(kTouching)));
 }
@@ -207,7 +207,7 @@ RC_GTEST_PROP(serve, answers_like_the_oracle_or_reports_its_overflow_on_arbitrar
 }
 
 TEST(run, writes_a_trace_of_every_world_equal_to_the_oracles) {
-  for (const EngineEntry& e : engines()) {
+  for (const EngineEntry& e : engines::engines()) {
     TempDir dir;
     const auto trace = dir.path / "t.jsonl";
     const RunResult result = run(kTouching, RunOptions{5, &e, 1, trace.string()});
@@ -585,7 +585,7 @@ class NoContacts final : public Stepper {
 std::unique_ptr<Stepper> start_no_contacts(const Circles& w, unsigned threads) {
   return std::make_unique<NoContacts>(w, threads);
 }
-const EngineEntry kNoContacts{"no-contacts", "", false, false, &start_no_contacts};
+const EngineEntry kNoContacts{"no-contacts", "", false, false, 256, &start_no_contacts};
 
 // kTouching's circles 0 and 1 touch in w_0, so in the oracle circle 0 takes velocity -1 and moves to
 // RN(-1/60); the wrong engine moves it to RN(1/60). 1/60 = 2^-6 · 16/15 = 0x1.111...p-6, rounded down (the

@@ -4,7 +4,7 @@
 #include "cli/conform_command.hpp"
 #include "cli/conform_report.hpp"
 
-#include "conform/engines.hpp"
+#include "engines/registry.hpp"
 #include "tests/temp_dir.hpp"
 
 #include <gtest/gtest.h>
@@ -144,7 +144,7 @@ TEST(ConformCommand, an_unknown_engine_exits_2_listing_the_engines) {
   ConformCommandOptions options = double_engine();
   options.engine = "quadruple";
   expect_exit_2(options,
-                "circles conform: unknown engine \"quadruple\" (the engines are: " + conform::engine_names() + ")\n");
+                "circles conform: unknown engine \"quadruple\" (the engines are: " + engines::engine_names() + ")\n");
 }
 
 TEST(ConformCommand, an_svg_file_in_a_missing_directory_exits_2_and_writes_nothing) {

@@ -39,6 +39,7 @@
 namespace circles::conform {
 
 using namespace circles::formats;
+using engines::engine;
 namespace {
 
 using circles::testing::TempDir;

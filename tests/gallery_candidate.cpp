@@ -20,7 +20,7 @@ using circles::testing::Circles;
 Circles finite(Circles w) {
   for (std::size_t k = 0; k < w.size(); ++k)
     for (const circles::spec::Field f : {circles::spec::Field::px, circles::spec::Field::py})
-      if (!std::isfinite(w[k][static_cast<std::size_t>(f)])) throw circles::conform::StepOverflow(1, k, f);
+      if (!std::isfinite(w[k][static_cast<std::size_t>(f)])) throw circles::engines::StepOverflow(1, k, f);
   return w;
 }
 

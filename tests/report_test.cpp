@@ -1,11 +1,11 @@
-// The reports of `circles conform` for CI (cli/report.hpp): the verdict as JSON, read back by nlohmann; as JUnit
-// XML, read back by pugixml as CI servers read it (one <testcase> per family, a <failure> with the
+// The reports of `circles conform` for CI (cli/report.hpp, conform/merge.hpp): the verdict as JSON, read back by
+// nlohmann; as JUnit XML, read back by pugixml as CI servers read it (one <testcase> per family, a <failure> with the
 // counterexample); and the reports of shards merged into one.
 #include "cli/conform_report.hpp"
 #include "cli/report.hpp"
 
 #include "conform/candidate.hpp"
-#include "conform/engines.hpp"
+#include "engines/registry.hpp"
 #include "conform/expect.hpp"
 #include "spec/oracle.hpp"
 #include "tests/function_candidate.hpp"
@@ -129,7 +129,7 @@ TEST(report, merges_the_reports_of_shards_into_the_unsharded_runs_cases_and_verd
     shards.push_back(json_report(v, ""));
     names.push_back("shard " + std::to_string(3 - i));
   }
-  const nlohmann::json merged = nlohmann::json::parse(merge_reports(shards, names));
+  const nlohmann::json merged = nlohmann::json::parse(conform::merge_reports(shards, names));
   const nlohmann::json unsharded = json_of(whole);
   EXPECT_EQ(merged["verdict"], unsharded["verdict"]);
   EXPECT_EQ(merged["cases"], unsharded["cases"]);
@@ -142,14 +142,14 @@ TEST(report, merges_the_reports_of_shards_into_the_unsharded_runs_cases_and_verd
   early["verdict"] = late["verdict"] = "does not conform";
   early["counterexample"] = {{"case", 3}, {"family", "early"}};
   late["counterexample"] = {{"case", 40}, {"family", "late"}};
-  const nlohmann::json both = nlohmann::json::parse(merge_reports({late.dump(), early.dump()}, {"late", "early"}));
+  const nlohmann::json both = nlohmann::json::parse(conform::merge_reports({late.dump(), early.dump()}, {"late", "early"}));
   EXPECT_EQ(both["verdict"], "does not conform");
   EXPECT_EQ(both["counterexample"]["family"], "early");
   EXPECT_EQ(both["cases"], 2 * unsharded["cases"].get<int>());
   // Every family's counterexample, the one of its lowest case over the shards, in the families' order.
   early["counterexamples"] = {{{"case", 3}, {"family", "tangency"}}, {{"case", 40}, {"family", "lattice"}}};
   late["counterexamples"] = {{{"case", 20}, {"family", "lattice"}}, {{"case", 36}, {"family", "zero-radius"}}};
-  const nlohmann::json all = nlohmann::json::parse(merge_reports({late.dump(), early.dump()}, {"late", "early"}));
+  const nlohmann::json all = nlohmann::json::parse(conform::merge_reports({late.dump(), early.dump()}, {"late", "early"}));
   std::vector<std::pair<std::string, int>> merged_counterexamples;
   for (const nlohmann::json& c : all["counterexamples"]) merged_counterexamples.emplace_back(c["family"], c["case"]);
   EXPECT_EQ(merged_counterexamples,
@@ -162,7 +162,7 @@ TEST(report, refuses_to_merge_reports_of_different_runs_or_a_shard_twice) {
   other_seed["seed"] = 10;
   other_seed["shard"] = "1/2";
   const auto refusal = [](const std::vector<std::string>& texts) {
-    const auto e = thrown<ReportError>([&] { merge_reports(texts, {"a.json", "b.json"}); });
+    const auto e = thrown<conform::ReportError>([&] { conform::merge_reports(texts, {"a.json", "b.json"}); });
     return e ? std::string(e->what()) : std::string("nothing thrown");
   };
   EXPECT_EQ(refusal({one.dump(), other_seed.dump()}),
@@ -182,7 +182,7 @@ TEST(report, refuses_to_merge_a_report_whose_keys_have_the_wrong_type_naming_the
     nlohmann::json other = json_of(verdict_of(testing::right_step, 1, 2));
     if (value.is_discarded()) other.erase(key);
     else other[key] = value;
-    const auto e = thrown<ReportError>([&] { merge_reports({one.dump(), other.dump()}, {"a.json", "b.json"}); });
+    const auto e = thrown<conform::ReportError>([&] { conform::merge_reports({one.dump(), other.dump()}, {"a.json", "b.json"}); });
     return e ? std::string(e->what()) : std::string("nothing thrown");
   };
   const nlohmann::json missing = nlohmann::json::value_t::discarded;
@@ -253,19 +253,19 @@ TEST(report, merges_each_familys_status_across_shards_the_failure_first) {
   nlohmann::json b = json_of(verdict_of(testing::right_step, 1, 2));
   a["family_status"]["lattice"] = "expected failure";  // failed in one shard as the file says, passed in the other
   b["family_status"]["tangency"] = "skipped";
-  const nlohmann::json conforming = nlohmann::json::parse(merge_reports({a.dump(), b.dump()}, {"a", "b"}));
+  const nlohmann::json conforming = nlohmann::json::parse(conform::merge_reports({a.dump(), b.dump()}, {"a", "b"}));
   EXPECT_EQ(conforming["verdict"], "conforms");
   EXPECT_EQ(conforming["family_status"]["lattice"], "expected failure");
   EXPECT_EQ(conforming["family_status"]["tangency"], "passed");
   b["family_status"]["tangency"] = "unexpected pass";
   a["family_status"]["ulp-nudge"] = "failed";
   b["family_status"]["ulp-nudge"] = "expected failure";
-  const nlohmann::json failing = nlohmann::json::parse(merge_reports({a.dump(), b.dump()}, {"a", "b"}));
+  const nlohmann::json failing = nlohmann::json::parse(conform::merge_reports({a.dump(), b.dump()}, {"a", "b"}));
   EXPECT_EQ(failing["verdict"], "does not conform");
   EXPECT_EQ(failing["family_status"]["tangency"], "unexpected pass");
   EXPECT_EQ(failing["family_status"]["ulp-nudge"], "failed");
   b["family_status"]["lattice"] = "sideways";
-  EXPECT_EQ(std::string(thrown<ReportError>([&] { merge_reports({a.dump(), b.dump()}, {"a", "b"}); })->what()),
+  EXPECT_EQ(std::string(thrown<conform::ReportError>([&] { conform::merge_reports({a.dump(), b.dump()}, {"a", "b"}); })->what()),
             "b: \"family_status\": lattice is \"sideways\", not a status of a family");
 }
 

@@ -210,17 +210,17 @@ TEST(random_world, refuses_a_world_larger_than_memory_before_allocating_it) {
 }
 
 TEST(random_world, is_the_benchmarks_scene_and_refuses_a_bad_coverage) {
-  const auto w = random_world(100, 0.1, 7, run_bytes_per_circle("double"));
+  const auto w = random_world(100, 0.1, 7, 256);
   ASSERT_EQ(w.size(), 100u);
   for (const auto& c : w) {
     EXPECT_GE(c[4], 2.0);
     EXPECT_LE(c[4], 6.0);
     EXPECT_LE(c[2] * c[2] + c[3] * c[3], 100.0 * 100.0);
   }
-  EXPECT_EQ(w, random_world(100, 0.1, 7, run_bytes_per_circle("double")));
-  EXPECT_NE(w, random_world(100, 0.1, 8, run_bytes_per_circle("double")));
-  EXPECT_THROW(random_world(100, 0.0, 7, run_bytes_per_circle("double")), SceneError);
-  EXPECT_THROW(random_world(0, 0.1, 7, run_bytes_per_circle("double")), SceneError);
+  EXPECT_EQ(w, random_world(100, 0.1, 7, 256));
+  EXPECT_NE(w, random_world(100, 0.1, 8, 256));
+  EXPECT_THROW(random_world(100, 0.0, 7, 256), SceneError);
+  EXPECT_THROW(random_world(0, 0.1, 7, 256), SceneError);
   const Scene s = random_scene(100, 0.1, 7, kOracleBytesPerCircle);
   EXPECT_EQ(s.name, "a random scene of 100 circles (coverage 0.1, seed 7)");
   ASSERT_EQ(s.circles.size(), 100u);

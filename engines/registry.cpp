@@ -1,4 +1,4 @@
-#include "conform/engines.hpp"
+#include "engines/registry.hpp"
 
 #include "impl/engine.hpp"
 #include "impl/exact_engine.hpp"
@@ -9,7 +9,7 @@
 #include <memory>
 #include <vector>
 
-namespace circles::conform {
+namespace circles::engines {
 
 StepOverflow::StepOverflow(std::uint64_t s, std::size_t i, spec::Field f)
     : std::overflow_error("step " + std::to_string(s) + ", " + overflow_reason(i, f)), step(s), index(i), field(f) {}
@@ -117,16 +117,26 @@ std::unique_ptr<Stepper> start(const Circles& world, unsigned threads) {
   return std::make_unique<S>(world, threads);
 }
 
+// bytes_per_circle: the peak resident memory of `circles run --engine NAME` on random scenes (/usr/bin/time's
+// maximum resident set size, less the 8 MB of an empty run), divided by the circles, on Debian 12 x86-64 with
+// glibc's malloc:
+//   double   207-210 bytes (1e6 and 4e6 circles, 1 to 20 steps, 1 or 2 threads): the engine's five arrays,
+//            their next-step copies, its cell keys and index arrays, and the scene
+//   exact    370 bytes (1e6 circles): integers over a common denominator, wider than doubles
+//   oracle   1560 bytes (4000 circles, 1 step): the exact rationals of two worlds
+// Each bound is the figure with 20-40% to spare, rounded to a power of two, so that a world the check lets
+// through fits; a count between the figure and the bound is refused though it might have fitted, which is the
+// side to err on, since with Linux's overcommit the alternative is the OOM killer.
 constexpr std::array kEngines{
     EngineEntry{"double",
                 "the double engine of impl/: exact decisions, correctly rounded positions, a broad phase, threads",
-                true, false, &start<ImplStepper<impl::DoubleEngine>>},
+                true, false, 256, &start<ImplStepper<impl::DoubleEngine>>},
     EngineEntry{"exact",
                 "the exact engine of impl/: the oracle's exact sequence in integers, each output rounded; a broad "
                 "phase, threads",
-                true, true, &start<ImplStepper<impl::ExactEngine>>},
+                true, true, 512, &start<ImplStepper<impl::ExactEngine>>},
     EngineEntry{"oracle", "the exact oracle of spec/, rounded to doubles: the reference, slow, one thread", false,
-                false, &start<OracleStepper>},
+                false, 2048, &start<OracleStepper>},
 };
 
 }  // namespace
@@ -158,7 +168,7 @@ const EngineEntry& engine(std::string_view name) {
 
 std::unique_ptr<Stepper> reference(const EngineEntry& engine, const Circles& world) {
   if (engine.exact) return std::make_unique<ExactOracleStepper>(world);
-  return conform::engine("oracle").start(world, 1);
+  return engines::engine("oracle").start(world, 1);
 }
 
 Circles step_once(const EngineEntry& engine, const Circles& world, unsigned threads) {
@@ -167,4 +177,4 @@ Circles step_once(const EngineEntry& engine, const Circles& world, unsigned thre
   return stepper->circles();
 }
 
-}  // namespace circles::conform
+}  // namespace circles::engines

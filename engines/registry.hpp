@@ -1,10 +1,12 @@
-// The engine registry: the names `--engine` takes, each a way to step a world of doubles.
+// The engine registry: the names `--engine` takes, each a way to step a world of doubles, for every command that
+// steps a world with a named engine (`circles run`, `serve`, `conform --engine`, the main job) and the checks
+// that need the oracle beside it (conform/).
 //
 // Every engine computes the resolved step of the oracle (docs/math.md), each coordinate rounded to the nearest
 // double. A rounding engine steps from the last world in doubles and must equal spec::resolved_step_rounded by
 // value at every step; an exact engine (docs/exact-engine.md) keeps the exact sequence of the oracle from w_0
 // and rounds only what it shows, so its w_t is the oracle's exact w_t rounded. To add one, write a Stepper for
-// it in engines.cpp and add a row to the table there; every command and message picks it up.
+// it in registry.cpp and add a row to the table there; every command and message picks it up.
 #pragma once
 
 #include "formats/protocol.hpp"
@@ -22,7 +24,7 @@
 #include <string>
 #include <string_view>
 
-namespace circles::conform {
+namespace circles::engines {
 
 using formats::Circles;
 
@@ -77,6 +79,9 @@ struct EngineEntry {
   std::string_view summary;  // for --help
   bool threaded;             // whether `threads` below means anything to it
   bool exact;                // keeps the exact sequence from w_0 (its reference is reference() below)
+  // The bytes per circle that `circles run` with this engine holds at its peak, for the memory check of a
+  // random world (formats::random_world). Measured, not derived: registry.cpp gives the figures.
+  std::size_t bytes_per_circle;
   // A stepper at w_0 = `world` (circles of C in the resolved profile) using up to `threads` threads (0: all
   // cores; engines without threads ignore it).
   std::unique_ptr<Stepper> (*start)(const Circles& world, unsigned threads);
@@ -108,4 +113,4 @@ std::unique_ptr<Stepper> reference(const EngineEntry& engine, const Circles& wor
 // w_1 from w_0 = `world` with `engine`: the step of one protocol request. Throws StepOverflow (step 1).
 Circles step_once(const EngineEntry& engine, const Circles& world, unsigned threads);
 
-}  // namespace circles::conform
+}  // namespace circles::engines

@@ -1,0 +1,106 @@
+#include "cli/run_command.hpp"
+
+#include "cli/run.hpp"
+#include "formats/scene.hpp"
+
+#include <limits>
+#include <stdexcept>
+#include <utility>
+
+namespace circles::cli {
+namespace {
+
+// The world to step, in doubles, and the scene's "steps" if it has them. A scene file is read into doubles alone
+// (load_scene_world), and a random world stays in doubles: its exact circles would take ten times the memory,
+// and the engines step doubles.
+SceneWorld world_of(const SceneOptions& scene, const engines::EngineEntry& engine) {
+  const RandomOptions& r = scene.random;
+  switch (scene.source()) {
+    case SceneOptions::Source::random:
+      return {.circles = random_world(r.circles, r.coverage, r.seed, engine.bytes_per_circle)};
+    case SceneOptions::Source::file: return load_scene_world(scene.path);
+    case SceneOptions::Source::embedded: break;
+  }
+  const Scene s = default_scene();
+  return {.steps = s.steps, .circles = doubles_of(s)};
+}
+
+// After an overflow: where it stopped, and what each output holds.
+void print_overflow(const RunResult& result, const RunCommandOptions& given, std::ostream& err) {
+  err << "circles run: " << result.overflow->what() << "; stopped after " << result.steps << " steps";
+  if (!given.trace.empty()) err << ", and the trace " << given.trace << " holds w_0 to w_" << result.steps;
+  if (!given.exact_trace.empty()) err << ", and the exact trace " << given.exact_trace << " w_0 to w_" << result.steps;
+  if (!given.render.empty() || !given.video.empty())
+    err << (given.trace.empty() ? ", and " : "; ") << "the frames" << (given.video.empty() ? "" : " of " + given.video)
+        << (given.render.empty() ? "" : " in " + given.render) << " go to w_" << result.steps / given.every * given.every;
+  err << "\n";
+}
+
+}  // namespace
+
+CLI::App* add_run_command(CLI::App& app, SceneOptions& scene, RunCommandOptions& options) {
+  CLI::App* run = app.add_subcommand(
+      "run", "Run an engine on a scene, optionally writing a JSON Lines trace, PNG frames or a video (docs/run.md)");
+  CLI::Option* file = add_scene_file(run, scene);
+  // Up to 2^63 - 1: CLI11 reads "-5" as 2^64 - 5 (strtoull), which this range refuses.
+  options.steps_option = run->add_option("--steps", options.steps,
+                                         "Number of steps (default: the scene's \"steps\", else 100)")
+                             ->capture_default_str()
+                             ->check(CLI::Range(std::uint64_t{0}, kMaxSceneSteps));
+  add_random_options(run, file, scene);
+  add_engine_options(run, options.engine, options.threads);
+  run->add_option("--trace", options.trace,
+                  "Write every world to this file, one JSON line {\"step\": t, \"circles\": [...]} each");
+  run->add_option("--exact-trace", options.exact_trace,
+                  "With --engine exact: write every world's exact state to this file, the lines of --trace with "
+                  "each number the rational \"n/d\"");
+  run->add_option("--render", options.render,
+                  "Draw frames as 1280x720 PNGs DIR/frame-000000.png, ... (DIR created if missing)");
+  options.every_option =
+      run->add_option("--every", options.every, "A frame every K steps: w_0, w_K, w_2K, ... (for --render and --video)")
+          ->capture_default_str()
+          ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{std::numeric_limits<std::int64_t>::max()}));
+  run->add_option("--video", options.video, "Pipe the frames to ffmpeg for an H.264 video FILE.mp4 at 60 frames/s");
+  run->add_flag("--fit", options.fit,
+                "Scale and centre the frames to hold every circle of every frame (default: 1 unit = 1 pixel)");
+  run->add_flag("--stats", options.stats,
+                "Also print the run's figures: steps, circles, engine, threads, times, ns per circle-step");
+  return run;
+}
+
+int run_command(const SceneOptions& scene, const RunCommandOptions& given, std::ostream& out, std::ostream& err) {
+  const engines::EngineEntry& engine = engines::engine(given.engine);
+  // A scene file is read first, so that a bad scene is named before any option that does not go with it; a random
+  // world is made only for a run that will take place.
+  const bool from_file = scene.source() == SceneOptions::Source::file;
+  SceneWorld world = from_file ? world_of(scene, engine) : SceneWorld{};
+  if ((given.fit || given.every_option->count() > 0) && given.render.empty() && given.video.empty()) {
+    err << "circles run: --fit and --every shape the frames of --render and --video, and neither is given\n";
+    return 2;
+  }
+  RunOptions options{given.steps, &engine, given.threads, given.trace};
+  options.exact_trace = given.exact_trace;
+  options.render = given.render;
+  options.every = given.every;
+  options.video = given.video;
+  options.fit = given.fit;
+  options.progress = given.progress;
+  if (!from_file) world = world_of(scene, engine);
+  if (given.steps_option->count() == 0 && world.steps) options.steps = *world.steps;
+  const std::size_t circle_count = world.circles.size();
+  RunResult result;
+  try {
+    result = run(std::move(world.circles), options);
+  } catch (const std::invalid_argument& e) {  // options run() refuses before any output, e.g. --exact-trace
+    err << "circles run: " << e.what() << "\n";
+    return 2;
+  }
+  out << "circles run: " << scene.name() << ": ";
+  print_summary(result, circle_count, options, out);
+  if (given.stats) print_stats(result, circle_count, options, out);
+  if (!result.overflow) return 0;
+  print_overflow(result, given, err);
+  return 2;
+}
+
+}  // namespace circles::cli
