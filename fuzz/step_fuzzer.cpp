@@ -94,14 +94,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const fuzz::StepInput input = fuzz::decode(std::span<const std::uint8_t>(data, size));
   const fuzz::Circles& w0 = input.circles;
   const bool oracle = w0.size() <= fuzz::kOracleCircles;
-  const fuzz::Chain rounded = fuzz::rounded_reference(w0, input.steps);
-  const fuzz::ExactChain exact = oracle ? fuzz::exact_reference(w0, input.steps) : fuzz::ExactChain{};
+  const std::uint64_t steps = fuzz::judged_steps(input);
+  const fuzz::Chain rounded = fuzz::rounded_reference(w0, steps);
+  const fuzz::ExactChain exact = oracle ? fuzz::exact_reference(w0, steps) : fuzz::ExactChain{};
   for (const unsigned threads : kThreads)
     for (const std::uint64_t horizon : kHorizons) {
       const impl::EngineOptions o{.threads = threads, .keep_pairs = true, .horizon = horizon};
-      if (auto d = fuzz::difference(rounded, double_chain(w0, input.steps, o)))
+      if (auto d = fuzz::difference(rounded, double_chain(w0, steps, o)))
         fuzz::fail(input, options_name("the double engine", o), *d);
-      const fuzz::ExactChain got = exact_chain(w0, input.steps, o);
+      const fuzz::ExactChain got = exact_chain(w0, steps, o);
       if (auto d = oracle ? fuzz::difference(exact, got) : exact_against_double(w0, got))
         fuzz::fail(input, options_name("the exact engine", o), *d);
     }

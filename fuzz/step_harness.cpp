@@ -15,12 +15,12 @@ using namespace circles;
 
 namespace {
 
-// circles_step's chain: K calls, each on the previous answer, to its first overflow or refusal.
-fuzz::Chain candidate_chain(const fuzz::StepInput& input) {
+// circles_step's chain: `steps` calls, each on the previous answer, to its first overflow or refusal.
+fuzz::Chain candidate_chain(const fuzz::StepInput& input, std::uint64_t steps) {
   fuzz::Chain chain;
   std::vector<double> in, out(5 * input.circles.size());
   for (const auto& c : input.circles) in.insert(in.end(), c.begin(), c.end());
-  for (std::uint64_t t = 1; t <= input.steps; ++t) {
+  for (std::uint64_t t = 1; t <= steps; ++t) {
     const int code = circles_step(input.circles.size(), in.data(), out.data());
     if (code == CIRCLES_STEP_OVERFLOW) {
       chain.overflow = fuzz::Overflow{t, fuzz::Overflow::kUnknown, ""};
@@ -44,7 +44,8 @@ fuzz::Chain candidate_chain(const fuzz::StepInput& input) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const fuzz::StepInput input = fuzz::decode(std::span<const std::uint8_t>(data, size));
-  if (auto d = fuzz::difference(fuzz::rounded_reference(input.circles, input.steps), candidate_chain(input)))
+  const std::uint64_t steps = fuzz::judged_steps(input);
+  if (auto d = fuzz::difference(fuzz::rounded_reference(input.circles, steps), candidate_chain(input, steps)))
     fuzz::fail(input, "circles_step", *d);
   return 0;
 }

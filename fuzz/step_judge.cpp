@@ -2,6 +2,7 @@
 
 #include "impl/exact_grid_reference.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -74,6 +75,10 @@ std::optional<std::string> chain_difference(const BasicChain<World>& want, const
 
 }  // namespace
 
+std::uint64_t judged_steps(const StepInput& input) {
+  return input.circles.size() <= kOracleCircles ? input.steps : std::min(input.steps, kBigSteps);
+}
+
 Chain chain_of(const Circles& w0, std::uint64_t steps, const RoundedStep& one) {
   Chain chain;
   const Circles* now = &w0;
@@ -145,10 +150,10 @@ std::string scene_text(const Circles& w, std::uint64_t steps, const std::string&
 void fail(const StepInput& input, const std::string& who, const std::string& what) {
   const char* named = std::getenv("CIRCLES_STEP_FUZZER_SCENE");
   const std::string path = named != nullptr && *named != '\0' ? named : "step_fuzzer-failure.json";
-  std::ofstream(path) << scene_text(input.circles, input.steps, "step fuzzer: " + who + " differs from its reference");
-  std::cerr << "step fuzzer: " << who << ", " << input.circles.size() << " circles, " << input.steps
+  std::ofstream(path) << scene_text(input.circles, judged_steps(input), "step fuzzer: " + who + " differs from its reference");
+  std::cerr << "step fuzzer: " << who << ", " << input.circles.size() << " circles, " << judged_steps(input)
             << " steps: " << what << "\n  the world is the scene " << path
-            << " (circles oracle " << path << " --steps " << input.steps << " steps it exactly, circles run "
+            << " (circles oracle " << path << " --steps " << judged_steps(input) << " steps it exactly, circles run "
             << path << " --trace FILE with the double engine); the input that made it is libFuzzer's crash file:\n"
             << "  replay it with the fuzzer and that file as its argument.\n";
   std::abort();

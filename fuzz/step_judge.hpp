@@ -22,6 +22,12 @@ namespace circles::fuzz {
 // Worlds up to this size are judged by the oracle itself; a step of 48 circles costs it about 1 ms.
 inline constexpr std::size_t kOracleCircles = 48;
 
+// Steps chained from a world of more than kOracleCircles circles: at most kBigSteps of the input's K, since each
+// costs the reference (and an O(n²) step under test) about as much as all the small worlds' steps together;
+// 3 is what the big_chains family asks (properties::steps_to_decide).
+inline constexpr std::uint64_t kBigSteps = 3;
+std::uint64_t judged_steps(const StepInput& input);
+
 // Where a chain stopped because a position would be ±infinity: at step `step` (1 for the step from w_0), the
 // first circle `index` and coordinate `field` ("px" before "py"), or index kUnknown when the step under test
 // does not say (the C ABI).
