@@ -152,10 +152,10 @@ void fail(const StepInput& input, const std::string& who, const std::string& wha
   const std::string path = named != nullptr && *named != '\0' ? named : "step_fuzzer-failure.json";
   std::ofstream(path) << scene_text(input.circles, judged_steps(input), "step fuzzer: " + who + " differs from its reference");
   std::cerr << "step fuzzer: " << who << ", " << input.circles.size() << " circles, " << judged_steps(input)
-            << " steps: " << what << "\n  the world is the scene " << path
-            << " (circles oracle " << path << " --steps " << judged_steps(input) << " steps it exactly, circles run "
-            << path << " --trace FILE with the double engine); the input that made it is libFuzzer's crash file:\n"
-            << "  replay it with the fuzzer and that file as its argument.\n";
+            << " steps: " << what << "\n  the world is the scene " << path << ", whose \"steps\" are the steps judged."
+            << "\n  Replay: the fuzzer with libFuzzer's crash file (the input) as its argument, the same engine options"
+            << "\n  and references; or circles run " << path << " --engine double --trace t.jsonl, then"
+            << "\n  circles check-trace t.jsonl, which holds the trace to the oracle step by step (docs/vectors.md).\n";
   std::abort();
 }
 
