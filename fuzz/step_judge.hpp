@@ -1,0 +1,79 @@
+// The step fuzzer's judge (docs/hardening.md, "The step fuzzer"): chains of steps made by a step under test,
+// the references they are held to, and the report of a difference as a replayable scene.
+//
+// A reference shares no arithmetic with what it judges: worlds of at most kOracleCircles circles are judged by
+// the oracle of spec/ (Boost/GMP rationals, every pair, the spec's own order); bigger worlds, whose every step
+// would cost the oracle O(n²) rational products, by impl::ExactGrid (impl/exact_grid_reference.hpp: GMP
+// integers on a uniform grid, the exact kernels), which is neither engine's broad phase nor the double
+// predicate. Never step_all_pairs or step_grid: they decide with the double engine's own predicate.
+#pragma once
+
+#include "fuzz/step_input.hpp"
+#include "spec/oracle.hpp"
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace circles::fuzz {
+
+// Worlds up to this size are judged by the oracle itself; a step of 48 circles costs it about 1 ms.
+inline constexpr std::size_t kOracleCircles = 48;
+
+// Steps chained from a world of more than kOracleCircles circles: at most kBigSteps of the input's K, since each
+// costs the reference (and an O(n²) step under test) about as much as all the small worlds' steps together;
+// 3 is what the big_chains family asks (properties::steps_to_decide).
+inline constexpr std::uint64_t kBigSteps = 3;
+std::uint64_t judged_steps(const StepInput& input);
+
+// Where a chain stopped because a position would be ±infinity: at step `step` (1 for the step from w_0), the
+// first circle `index` and coordinate `field` ("px" before "py"), or index kUnknown when the step under test
+// does not say (the C ABI).
+struct Overflow {
+  static constexpr std::size_t kUnknown = ~std::size_t{0};
+  std::uint64_t step = 0;
+  std::size_t index = kUnknown;
+  std::string field;
+};
+
+// w_1 … w_m of a chain, then the overflow that stopped it, if any.
+template <class World>
+struct BasicChain {
+  std::vector<World> worlds;
+  std::optional<Overflow> overflow;
+};
+using Chain = BasicChain<Circles>;             // rounded: each step from the previous world of doubles
+using ExactChain = BasicChain<spec::Sequence>;  // exact: no rounding in the state
+
+// One step of a reference from a world of doubles: the next world, or where it overflows.
+using RoundedStep = std::function<Chain(const Circles&)>;
+
+// `steps` steps chained from w0 by `one` (each a chain of one world or of an overflow), stopping at an overflow.
+Chain chain_of(const Circles& w0, std::uint64_t steps, const RoundedStep& one);
+
+// The reference for a double step: `steps` rounded steps from w0, by the oracle (spec::resolved_step_rounded)
+// for worlds of at most kOracleCircles circles, else by impl::ExactGrid's rounded step.
+Chain rounded_reference(const Circles& w0, std::uint64_t steps);
+// The reference for an exact step: the oracle's spec::resolved_step chained `steps` times from w0's exact
+// values, stopping at the first step with a position whose nearest double is ±infinity (the exact engine's
+// PositionOverflow). Bigger worlds' exact steps are held to the double engine instead (fuzz/step_fuzzer.cpp),
+// which shares no arithmetic with the exact engine and is itself held to impl::ExactGrid.
+ExactChain exact_reference(const Circles& w0, std::uint64_t steps);
+
+// How `got` differs from `want`, or nothing: the same number of worlds, each equal by value (−0 == +0, as the
+// spec's rationals), and the same overflow (its circle and field too, when `got` names them).
+std::optional<std::string> difference(const Chain& want, const Chain& got);
+std::optional<std::string> difference(const ExactChain& want, const ExactChain& got);
+
+// The scene of a world (docs/scenes.md): {"name": ..., "steps": ..., "circles": [[px, py, vx, vy, r], ...]},
+// each double written in the fewest digits that read back as it (−0 as -0).
+std::string scene_text(const Circles& w, std::uint64_t steps, const std::string& name);
+
+// The report of a difference: writes input's world as a scene to the file named by the environment variable
+// CIRCLES_STEP_FUZZER_SCENE (default: step_fuzzer-failure.json in the working directory), prints `who`, `what`
+// and how to replay it to stderr, and aborts, so that libFuzzer saves the input as a crash.
+[[noreturn]] void fail(const StepInput& input, const std::string& who, const std::string& what);
+
+}  // namespace circles::fuzz
