@@ -1,5 +1,5 @@
 // libFuzzer target for the engines' step (docs/hardening.md, "The step fuzzer"): each input, a world and K
-// chained steps (fuzz/step_input.hpp), is stepped by the double engine (impl::Engine) and the exact engine
+// chained steps (fuzz/step_input.hpp), is stepped by the double engine (impl::DoubleEngine) and the exact engine
 // (impl::ExactEngine), each with 1 and 2 threads and pair-list horizons 0 (the schedule's choice), 8 and 64,
 // and every chain is held to a reference that shares no arithmetic with it (fuzz/step_judge.hpp):
 //   double engine  the oracle's rounded steps (spec/), or for big worlds impl::ExactGrid's rounded steps;
@@ -43,8 +43,8 @@ Chain run(Engine engine, std::uint64_t steps, Read read) {
 }
 
 fuzz::Chain double_chain(const fuzz::Circles& w0, std::uint64_t steps, const impl::EngineOptions& o) {
-  return run<impl::Engine, fuzz::Chain>(impl::Engine(impl::World(w0), o), steps,
-                                        [](const impl::Engine& e) { return e.world().circles(); });
+  return run<impl::DoubleEngine, fuzz::Chain>(impl::DoubleEngine(impl::World(w0), o), steps,
+                                        [](const impl::DoubleEngine& e) { return e.world().circles(); });
 }
 
 fuzz::ExactChain exact_chain(const fuzz::Circles& w0, std::uint64_t steps, const impl::EngineOptions& o) {

@@ -113,7 +113,7 @@ TEST(step_judge, the_double_engine_passes_and_the_naive_engine_is_caught_on_the_
   for (std::uint64_t seed = 0; seed < 100; ++seed) {
     const Circles w = family_world(properties::Family::ulp_nudge, seed);
     const Chain want = rounded_reference(w, 2);
-    EXPECT_EQ(difference(want, engine_chain<impl::Engine>(w, 2)), std::nullopt) << "seed " << seed;
+    EXPECT_EQ(difference(want, engine_chain<impl::DoubleEngine>(w, 2)), std::nullopt) << "seed " << seed;
     if (difference(want, engine_chain<impl::NaiveEngine>(w, 2))) ++caught;
   }
   EXPECT_GT(caught, 0);
@@ -127,7 +127,7 @@ TEST(step_judge, the_naive_engine_is_caught_on_a_big_world_judged_by_the_exact_g
     if (w.size() <= kOracleCircles) continue;
     ++judged;
     const Chain want = rounded_reference(w, 1);
-    EXPECT_EQ(difference(want, engine_chain<impl::Engine>(w, 1)), std::nullopt) << "seed " << seed;
+    EXPECT_EQ(difference(want, engine_chain<impl::DoubleEngine>(w, 1)), std::nullopt) << "seed " << seed;
     if (difference(want, engine_chain<impl::NaiveEngine>(w, 1))) ++caught;
   }
   EXPECT_GT(judged, 0);
@@ -140,7 +140,7 @@ TEST(step_judge, a_step_that_misses_an_overflow_or_names_another_circle_is_caugh
   ASSERT_TRUE(want.overflow.has_value());
   EXPECT_EQ(want.overflow->index, 1u);
   EXPECT_EQ(want.overflow->field, "px");
-  EXPECT_EQ(difference(want, engine_chain<impl::Engine>(w, 1)), std::nullopt);
+  EXPECT_EQ(difference(want, engine_chain<impl::DoubleEngine>(w, 1)), std::nullopt);
   EXPECT_EQ(difference(want, Chain{{}, Overflow{1, Overflow::kUnknown, ""}}), std::nullopt);  // a C step names no circle
   EXPECT_EQ(difference(want, Chain{{w}, std::nullopt}),
             "after 0 steps alike: no overflow, want an overflow at step 1, circle 1 px");
