@@ -187,7 +187,7 @@ int figures(const std::filesystem::path& dir, const std::filesystem::path& csv, 
              (ns ? std::to_string(timed) : std::string()) + "," + outcome_columns(o) + "\n";
     }
     const Kind engines[] = {Kind::float_naive, Kind::naive_sqrt, Kind::naive_squares, Kind::exact_decisions,
-                            Kind::engine, Kind::exact};
+                            Kind::double_engine, Kind::exact};
     for (const Contact& c : designed_contacts(scene, engines))
       contacts += scene.id + "," + std::to_string(c.pair.a) + "," + std::to_string(c.pair.b) + "," +
                   std::to_string(c.pair.step) + "," + figure(c.pair.gap) + "," + std::string(id_of(c.kind)) + "," +
@@ -292,7 +292,7 @@ void check_scaling(const Scene& base, const Scene& scaled, int e, std::uint64_t 
 int stability(const std::filesystem::path& csv, std::uint64_t long_steps, std::uint64_t oracle_steps) {
   std::string out = std::string("scene,circles,steps,variant,") + kOutcomeHeader + ",non_finite,designed_as_exact\n";
   const Kind engines[] = {Kind::float_naive, Kind::naive_sqrt, Kind::naive_squares, Kind::exact_decisions,
-                          Kind::engine, Kind::exact};
+                          Kind::double_engine, Kind::exact};
   const std::vector<Scene> scenes = stress_scenes(long_steps);
   const Scene base = bundled_scenes().back();  // tangency_sixtieths
   for (const Scene& scene : scenes) {

@@ -44,12 +44,12 @@ enum class Kind {
   naive_sqrt,       // BasicEngine<NaiveSqrtArithmetic>: √(dx² + dy²) ≤ ra + rb and p + v·RN(1/60), doubles
   naive_squares,    // impl::NaiveEngine: (ra + rb)² ≥ dx² + dy² and p + v·RN(1/60), doubles
   exact_decisions,  // BasicEngine<ExactDecisionArithmetic>: the exact test, the naive update
-  engine,           // impl::Engine: the exact test, RN(p + v/60) (the correctly rounded oracle step)
+  double_engine,    // impl::DoubleEngine: the exact test, RN(p + v/60) (the correctly rounded oracle step)
   exact,            // impl::ExactEngine: no rounding in the state
   oracle,           // spec::resolved_step: the oracle's transcription of (1)-(9), rationals, O(n²) sets
 };
 inline constexpr Kind kKinds[] = {Kind::float_naive, Kind::naive_sqrt,   Kind::naive_squares, Kind::exact_decisions,
-                                  Kind::engine,      Kind::exact,        Kind::oracle};
+                                  Kind::double_engine, Kind::exact,        Kind::oracle};
 
 // "float_naive", "naive_sqrt", ...: the CSV's variant column.
 std::string_view id_of(Kind kind);

@@ -133,7 +133,7 @@ std::string_view id_of(Kind kind) {
     case Kind::naive_sqrt: return "naive_sqrt";
     case Kind::naive_squares: return "naive_squares";
     case Kind::exact_decisions: return "exact_decisions";
-    case Kind::engine: return "engine";
+    case Kind::double_engine: return "double_engine";
     case Kind::exact: return "exact";
     case Kind::oracle: return "oracle";
   }
@@ -152,7 +152,7 @@ std::unique_ptr<Variant> make_variant(Kind kind, const Doubles& scene) {
     case Kind::naive_sqrt: return std::make_unique<EngineVariant<impl::NaiveSqrtArithmetic>>(scene);
     case Kind::naive_squares: return std::make_unique<EngineVariant<impl::NaiveArithmetic>>(scene);
     case Kind::exact_decisions: return std::make_unique<EngineVariant<impl::ExactDecisionArithmetic>>(scene);
-    case Kind::engine: return std::make_unique<EngineVariant<impl::RoundedArithmetic>>(scene);
+    case Kind::double_engine: return std::make_unique<EngineVariant<impl::RoundedArithmetic>>(scene);
     case Kind::exact: return std::make_unique<ExactVariant>(scene);
     case Kind::oracle: return std::make_unique<OracleVariant>(scene);
   }

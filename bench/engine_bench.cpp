@@ -1,6 +1,6 @@
 // The engines' cost per circle-step and, in the same run, what it is measured against: the same engine with
 // naive arithmetic, all-pairs steps, a plain uniform grid, and the streaming floor; the double engine
-// (impl::Engine, family engine_exact) and the exact engine (impl::ExactEngine, family exact_engine) at every
+// (impl::DoubleEngine, family double_engine) and the exact engine (impl::ExactEngine, family exact_engine) at every
 // coverage of issue 11's sweep, and at 10% coverage also on the scene rounded to multiples of 2^-20 (families
 // *_coarse, both engines; issue 4), which the exact engine holds in 64-bit integers.
 // Every scene is impl::random_scene(n, coverage, kSceneSeed); bench/harness.hpp says how steps are timed.
@@ -85,7 +85,7 @@ void register_all() {
     // (side / 12)² = 10^6 · 54.5 / 0.001 / 144 = 3.8·10^8 cells (54.5 = π·E[r²], bench/harness.hpp), past its
     // cap of 2^28, so it starts at 1%.
     for (const double coverage : kCoverages) {
-      for (const unsigned threads : kThreadCounts) register_engine<impl::Engine>("engine_exact", n, coverage, threads);
+      for (const unsigned threads : kThreadCounts) register_engine<impl::DoubleEngine>("double_engine", n, coverage, threads);
       register_engine<impl::ExactEngine>("exact_engine", n, coverage, 1);
       if (coverage > kSparseCoverage)
         register_baseline<UniformGrid>("uniform_grid", n, copies_for(n, kStepsPerStepper), kStepsPerStepper,
@@ -95,7 +95,7 @@ void register_all() {
     }
     register_engine<impl::NaiveEngine>("engine_naive", n, kTargetCoverage, 1);
     register_engine<impl::ExactEngine>("exact_engine", n, kTargetCoverage, 2);
-    register_engine<impl::Engine>("engine_exact_coarse", n, kTargetCoverage, 1, coarse_scene);
+    register_engine<impl::DoubleEngine>("double_engine_coarse", n, kTargetCoverage, 1, coarse_scene);
     register_engine<impl::ExactEngine>("exact_engine_coarse", n, kTargetCoverage, 1, coarse_scene);
     if (n <= kAllPairsMax) {
       register_baseline<AllPairsNaive>("all_pairs_naive", n, 1, all_pairs_steps(n), kTargetCoverage);

@@ -30,7 +30,7 @@ formats::CircleSource Stepper::source() const {
 
 namespace {
 
-// An engine of impl/ (impl::Engine or impl::ExactEngine): its step, with PositionOverflow as an Overflow.
+// An engine of impl/ (impl::DoubleEngine or impl::ExactEngine): its step, with PositionOverflow as an Overflow.
 template <class E>
 class ImplStepper final : public Stepper {
  public:
@@ -120,7 +120,7 @@ std::unique_ptr<Stepper> start(const Circles& world, unsigned threads) {
 constexpr std::array kEngines{
     EngineEntry{"double",
                 "the double engine of impl/: exact decisions, correctly rounded positions, a broad phase, threads",
-                true, false, &start<ImplStepper<impl::Engine>>},
+                true, false, &start<ImplStepper<impl::DoubleEngine>>},
     EngineEntry{"exact",
                 "the exact engine of impl/: the oracle's exact sequence in integers, each output rounded; a broad "
                 "phase, threads",
@@ -133,7 +133,7 @@ constexpr std::array kEngines{
 
 std::span<const EngineEntry> engines() { return kEngines; }
 
-unsigned max_threads() { return impl::Engine::kMaxThreads; }
+unsigned max_threads() { return impl::DoubleEngine::kMaxThreads; }
 
 std::string engine_names() {
   std::string names;

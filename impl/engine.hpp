@@ -1,7 +1,7 @@
 // The double engines: the resolved step of the oracle (spec/equations.hpp, docs/math.md) over doubles.
 //
 //   Invariant: for every World w whose next positions are finite,
-//              Engine(w).step() leaves world() equal, by value (−0 == +0), to spec::resolved_step_rounded(w):
+//              DoubleEngine(w).step() leaves world() equal, by value (−0 == +0), to spec::resolved_step_rounded(w):
 //              circle k takes the velocity of the least circle it intersects exactly (least in lexicographic
 //              order on (px, py, vx, vy, r), then by index), or keeps its own, and then
 //              p ← RN(p + v_new/60) per coordinate. Every circle reads the old world. The result does not depend
@@ -138,7 +138,7 @@ class BasicEngine {
   std::vector<double> scratch_, inflated_, padded_, backup_px_, backup_py_;
 };
 
-using Engine = BasicEngine<RoundedArithmetic>;
+using DoubleEngine = BasicEngine<RoundedArithmetic>;
 using NaiveEngine = BasicEngine<NaiveArithmetic>;
 extern template class BasicEngine<RoundedArithmetic>;
 extern template class BasicEngine<NaiveArithmetic>;
@@ -148,7 +148,7 @@ extern template class BasicEngine<FloatNaiveArithmetic>;
 extern template class BasicEngine<ExactDecisionArithmetic>;
 
 // The reference engine for tests: the exact step with every pair tested (no broad phase). O(n²).
-// Throws PositionOverflow (step 1) like Engine::step.
+// Throws PositionOverflow (step 1) like DoubleEngine::step.
 World step_all_pairs(const World& w);
 
 // Circle a's least contact so far (least[a] == a while it has none) after contact b is offered: the least by
@@ -159,7 +159,7 @@ inline void offer_contact(const World& w, std::vector<std::size_t>& least, std::
 
 // The end of the references' step, from each circle's least contact (itself when it has none): v ← v[least],
 // then p ← advance_rounded(p, v). Throws PositionOverflow (step 1) for the first circle, then px before py,
-// whose position overflows, like Engine::step.
+// whose position overflows, like DoubleEngine::step.
 World step_from_contacts(const World& w, std::span<const std::size_t> least);
 
 }  // namespace circles::impl

@@ -112,7 +112,7 @@ std::variant<Circles, NoAnswer> expected_step(const Circles& w, Profile profile)
     // the program's, even at 10^6 circles.
     try {
       if (w.size() <= kAllPairsUpTo) return impl::step_all_pairs(impl::World{w}).circles();
-      impl::Engine engine(impl::World{w}, impl::EngineOptions{.threads = 0, .keep_pairs = false, .horizon = 0});
+      impl::DoubleEngine engine(impl::World{w}, impl::EngineOptions{.threads = 0, .keep_pairs = false, .horizon = 0});
       engine.step();
       return engine.world().circles();
     } catch (const impl::PositionOverflow&) {

@@ -106,10 +106,10 @@ TEST(accuracy, rounding_engines_depart_from_the_exact_run_on_the_sixtieths_scene
   EXPECT_EQ(velocity_after<NaiveSqrt>("tangency_sixtieths", 601, 6), stopped) << "the naive engine makes a contact";
   EXPECT_EQ(velocity_after<impl::NaiveEngine>("tangency_sixtieths", 61, 4), (Velocity{94, 0}));
 
-  EXPECT_EQ(velocity_after<impl::Engine>("tangency_sixtieths", 61, 2), (Velocity{86, 0})) << "the double engine misses";
-  EXPECT_EQ(velocity_after<impl::Engine>("tangency_sixtieths", 61, 4), stopped);
-  EXPECT_EQ(velocity_after<impl::Engine>("tangency_sixtieths", 601, 0), (Velocity{7, 0}));
-  EXPECT_EQ(velocity_after<impl::Engine>("tangency_sixtieths", 601, 6), stopped);
+  EXPECT_EQ(velocity_after<impl::DoubleEngine>("tangency_sixtieths", 61, 2), (Velocity{86, 0})) << "the double engine misses";
+  EXPECT_EQ(velocity_after<impl::DoubleEngine>("tangency_sixtieths", 61, 4), stopped);
+  EXPECT_EQ(velocity_after<impl::DoubleEngine>("tangency_sixtieths", 601, 0), (Velocity{7, 0}));
+  EXPECT_EQ(velocity_after<impl::DoubleEngine>("tangency_sixtieths", 601, 6), stopped);
 }
 
 // On tangency_exact every move is exact in doubles, so the exact test alone decides: the double engine keeps
@@ -117,8 +117,8 @@ TEST(accuracy, rounding_engines_depart_from_the_exact_run_on_the_sixtieths_scene
 // both tests; circle 8, the squares test only).
 TEST(accuracy, on_moves_exact_in_doubles_only_the_naive_tests_depart) {
   const Velocity stopped{0, 0}, moving{75, 78.75};
-  EXPECT_EQ(velocity_after<impl::Engine>("tangency_exact", 65, 6), stopped);
-  EXPECT_EQ(velocity_after<impl::Engine>("tangency_exact", 65, 8), stopped);
+  EXPECT_EQ(velocity_after<impl::DoubleEngine>("tangency_exact", 65, 6), stopped);
+  EXPECT_EQ(velocity_after<impl::DoubleEngine>("tangency_exact", 65, 8), stopped);
   using NaiveSqrt = impl::BasicEngine<impl::NaiveSqrtArithmetic>;
   EXPECT_EQ(velocity_after<NaiveSqrt>("tangency_exact", 65, 6), moving);
   EXPECT_EQ(velocity_after<NaiveSqrt>("tangency_exact", 65, 8), stopped);

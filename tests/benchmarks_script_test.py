@@ -47,7 +47,7 @@ def meeting(family, n, coverage, threads):
     """Figures that meet every target, each by a margin: the double engine at 30 ns dense at every size (the
     plain grid 100) and 6 ns sparse (the floor 2.5), 1.9 times faster on two threads; Box2D 250 times slower;
     the exact engine 1.2 times the double engine."""
-    base = {"engine_exact": 30.0 if coverage >= 1 else 6.0, "uniform_grid": 100.0, "streaming_floor": 2.5,
+    base = {"double_engine": 30.0 if coverage >= 1 else 6.0, "uniform_grid": 100.0, "streaming_floor": 2.5,
             "box2d": 30.0 * 250}[family] if family != "exact_engine" else 1.2 * (30.0 if coverage >= 1 else 6.0)
     return base / (1.9 if threads == 2 else 1)
 
@@ -69,15 +69,15 @@ def check_report(b):
         failed = [t for t, vs in got.items() if any(v != "met" for v in vs)]
         assert failed == [target], f"{key} × {factor}: targets {failed} not met, expected only {target}"
 
-    past(("engine_exact", 10**6, 10, 1), 0.36 / 0.30, 1)           # 0.36× the grid
+    past(("double_engine", 10**6, 10, 1), 0.36 / 0.30, 1)           # 0.36× the grid
     past(("streaming_floor", 10**6, 0.1, 1), 6.0 / 3.1 / 2.5, 2)   # the floor at 1.94: 3.1×
     past(("box2d", 10**5, 10, 1), 199 / 250, 3)                     # 199×
     past(("exact_engine", 10**3, 10, 1), 1 / 1.51, 4)               # the exact engine grows 1.51× dense
-    past(("engine_exact", 10**6, 10, 2), 1.9 / 1.79, 5)             # two threads 1.79×
+    past(("double_engine", 10**6, 10, 2), 1.9 / 1.79, 5)             # two threads 1.79×
     past(("exact_engine", 10**6, 0.1, 1), 1.26 / 1.2, 6)            # 1.26× sparse
     # At the bound itself, the target holds.
     at_bound = dict(table)
-    at_bound[("engine_exact", 10**6, 10, 1)] = [35.0] * 3
+    at_bound[("double_engine", 10**6, 10, 1)] = [35.0] * 3
     assert verdicts(render(b, at_bound))[1] == ["met"], "0.35× the grid meets target 1"
 
     # A run without 10^6 circles (--quick) measures neither the targets at 10^6 nor the sweeps.
@@ -109,7 +109,7 @@ def check_report(b):
     pattern = re.compile(b.bench_filter(keys))
     for k in keys:
         assert pattern.search(b.bench_name(*k) + "/iterations:30/real_time"), k
-    for other in ("engine_exact/coverage:10/threads:1/n:10000000/iterations:1/real_time",
+    for other in ("double_engine/coverage:10/threads:1/n:10000000/iterations:1/real_time",
                   "engine_naive/coverage:10/threads:1/n:1000000/iterations:30/real_time",
                   "uniform_grid/coverage:10/threads:2/n:1000000/iterations:30/real_time",
                   "exact_engine/coverage:40/threads:1/n:1000/iterations:3000/real_time"):

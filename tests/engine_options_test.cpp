@@ -26,8 +26,8 @@ using Circles = std::vector<std::array<double, 5>>;
 // requires the same bits after every step; returns the step (1-based) at which circle 0 first changed
 // velocity, or 0. `quiet` is the keeping engine's count of steps that tested no pair.
 int lockstep(const Circles& w, int steps, std::uint64_t& quiet) {
-  Engine skipping{World{w}, {1, true}};
-  Engine every{World{w}, {1, false}};
+  DoubleEngine skipping{World{w}, {1, true}};
+  DoubleEngine every{World{w}, {1, false}};
   int first_change = 0;
   for (int s = 1; s <= steps; ++s) {
     skipping.step();
@@ -94,7 +94,7 @@ TEST(engine_options, kept_lists_keep_the_overflow_error_and_its_step) {
       now = next;
   }
   ASSERT_GT(overflow_at, 1);
-  Engine e{World{w}};
+  DoubleEngine e{World{w}};
   std::optional<PositionOverflow> error;
   for (int s = 1; s <= 400 && !error; ++s) {
     try {
@@ -120,7 +120,7 @@ TEST(engine_options, threads_split_large_worlds_into_chunks_and_agree_with_the_a
     w.push_back({1000 * unit(g), 1000 * unit(g), 200 * unit(g) - 100, 200 * unit(g) - 100,
                  std::exp2(-2 + 9 * unit(g) * unit(g) * unit(g))});
   for (const unsigned threads : {2u, 4u}) {
-    Engine e{World{w}, {threads, true}};
+    DoubleEngine e{World{w}, {threads, true}};
     for (int s = 0; s < 2; ++s) {
       const World reference = step_all_pairs(e.world());
       e.step();
@@ -137,7 +137,7 @@ TEST(engine_options, threads_split_large_worlds_into_chunks_and_agree_with_the_a
 }
 
 TEST(engine_options, refuses_more_threads_than_it_supports) {
-  const auto error = testing::thrown<std::invalid_argument>([] { Engine{World{}, {Engine::kMaxThreads + 1, true}}; });
+  const auto error = testing::thrown<std::invalid_argument>([] { DoubleEngine{World{}, {DoubleEngine::kMaxThreads + 1, true}}; });
   ASSERT_TRUE(error);
   EXPECT_STREQ(error->what(), "EngineOptions::threads: 257 is more than 256");
 }

@@ -1,6 +1,6 @@
 // The double engine (impl/engine.hpp) against the correctly rounded oracle step spec::resolved_step_rounded.
 //
-// Every world is checked the same way (Check::world): one Engine step must equal the oracle step by value
+// Every world is checked the same way (Check::world): one DoubleEngine step must equal the oracle step by value
 // (−0 == +0) in every coordinate; the all-pairs reference engine and the grid reference (impl/grid_reference.hpp)
 // must give the same bits as the engine; and
 // the broad phase's candidates must contain every exactly intersecting pair (the all-pairs validator).
@@ -77,9 +77,9 @@ struct Check {
 
   // One step of w: engine == oracle by value, engine == all-pairs reference bitwise, candidates cover every
   // intersecting pair. Returns the engine's next world (for multi-step runs).
-  Circles world(const Circles& w, Engine* engine = nullptr) {
-    Engine local{World{w}};
-    Engine& e = engine ? *engine : local;
+  Circles world(const Circles& w, DoubleEngine* engine = nullptr) {
+    DoubleEngine local{World{w}};
+    DoubleEngine& e = engine ? *engine : local;
     const World before = e.world();
     const std::vector<CandidatePair> tested = e.candidates();
     e.step();
@@ -142,7 +142,7 @@ TEST(engine, agrees_with_the_rounded_oracle_on_random_worlds_of_0_to_40_circles_
   std::mt19937_64 g(20261122);
   for (int t = 0; t < 300; ++t) {
     Circles w = random_world(g, static_cast<std::size_t>(t % 41));
-    Engine e{World{w}};
+    DoubleEngine e{World{w}};
     for (int s = 0; s < 3; ++s) w = check.world(w, &e);
   }
   EXPECT_GT(check.new_velocity, check.circles / 10) << "the random worlds are too sparse to test contacts";
@@ -274,7 +274,7 @@ TEST(engine, broad_phase_covers_every_intersecting_pair_in_larger_worlds_over_ma
       w.push_back({x, uniform(g, 0, 1000), uniform(g, -600, 600), uniform(g, -600, 600),
                    std::exp2(uniform(g, -30, 7))});
     }
-    Engine e{World{w}};
+    DoubleEngine e{World{w}};
     for (int s = 0; s < 5; ++s) {
       const World before = e.world();
       const World reference = step_all_pairs(before);
@@ -306,7 +306,7 @@ std::optional<std::pair<std::size_t, std::string>> first_overflow(const Circles&
 // exactly the first circle whose oracle position is infinite, and otherwise agrees by value.
 void agrees_or_overflows_like_the_oracle(const Circles& w) {
   const Circles want = spec::resolved_step_rounded(w);
-  Engine e{World{w}};
+  DoubleEngine e{World{w}};
   const auto overflow = first_overflow(want);
   RC_TAG(overflow ? "overflow" : "finite");
   const std::vector<CandidatePair> tested = e.candidates();
@@ -411,7 +411,7 @@ TEST(engine, agrees_with_the_rounded_oracle_on_random_worlds_of_64_to_120_circle
   std::mt19937_64 g(120);
   for (int t = 0; t < 12; ++t) {
     Circles w = random_world(g, static_cast<std::size_t>(integer(g, 64, 120)));
-    Engine e{World{w}};
+    DoubleEngine e{World{w}};
     for (int s = 0; s < 2; ++s) w = check.world(w, &e);
   }
 }
@@ -455,7 +455,7 @@ TEST(engine, throws_position_overflow_naming_the_circle_and_leaves_the_world_unc
   // Circle 2 moves past DBL_MAX in y by its own velocity; the others stay finite.
   const Circles w{{-m, -m, 0, 0, 0}, {0, 0, 1, 1, 1}, {0, m, 0, m, 1}};
   EXPECT_TRUE(std::isinf(spec::resolved_step_rounded(w)[2][1]));
-  Engine e{World{w}};
+  DoubleEngine e{World{w}};
   const auto own = thrown<PositionOverflow>([&] { e.step(); });
   ASSERT_TRUE(own);
   EXPECT_EQ(own->index, 2u);
@@ -469,7 +469,7 @@ TEST(engine, throws_position_overflow_naming_the_circle_and_leaves_the_world_unc
   const Circles oracle = spec::resolved_step_rounded(taken);
   EXPECT_TRUE(std::isinf(oracle[1][1]));
   EXPECT_EQ(oracle[2][1], m);
-  const auto first = thrown<PositionOverflow>([&] { Engine{World{taken}}.step(); });
+  const auto first = thrown<PositionOverflow>([&] { DoubleEngine{World{taken}}.step(); });
   ASSERT_TRUE(first);
   EXPECT_EQ(first->index, 1u);
   EXPECT_STREQ(first->field, "py");
@@ -479,13 +479,13 @@ TEST(engine, throws_position_overflow_naming_the_circle_and_leaves_the_world_unc
   // one ulp less of velocity rounds to DBL_MAX.
   const double tie = 0x1.ep975;  // 60·2^970
   const Circles below{{m, 0, std::nextafter(tie, 0.0), 0, 0}};
-  Engine stays{World{below}};
+  DoubleEngine stays{World{below}};
   stays.step();
   EXPECT_EQ(stays.world().px()[0], m);
   EXPECT_EQ(spec::resolved_step_rounded(below)[0][0], m);
   const Circles at{{1, 2, 0, 0, 0}, {m, 0, tie, 0, 0}};
   EXPECT_TRUE(std::isinf(spec::resolved_step_rounded(at)[1][0]));
-  const auto tie_overflows = thrown<PositionOverflow>([&] { Engine{World{at}}.step(); });
+  const auto tie_overflows = thrown<PositionOverflow>([&] { DoubleEngine{World{at}}.step(); });
   ASSERT_TRUE(tie_overflows);
   EXPECT_EQ(tie_overflows->index, 1u);
   EXPECT_STREQ(tie_overflows->field, "px");
@@ -519,7 +519,7 @@ TEST(engine, world_converts_back_to_the_same_bits) {
     for (std::size_t f = 0; f < 5; ++f)
       EXPECT_EQ(std::bit_cast<std::uint64_t>(back[k][f]), std::bit_cast<std::uint64_t>(w[k][f]));
   EXPECT_EQ(World{}.size(), 0u);
-  Engine empty{World{Circles{}}};
+  DoubleEngine empty{World{Circles{}}};
   empty.step();
   EXPECT_EQ(empty.world().size(), 0u);
 }

@@ -482,7 +482,7 @@ RC_GTEST_PROP(exact_engine, follows_the_oracle_on_rational_worlds_with_any_horiz
 
 // Steps the double engine and `engines` side by side; every engine's world() must equal the double engine's
 // after every step.
-void lockstep(Engine& doubles, std::vector<ExactEngine>& engines, int steps) {
+void lockstep(DoubleEngine& doubles, std::vector<ExactEngine>& engines, int steps) {
   for (int t = 1; t <= steps; ++t) {
     doubles.step();
     const Circles expected = doubles.world().circles();
@@ -558,7 +558,7 @@ TEST(exact_engine, every_horizon_and_thread_count_gives_the_same_state_as_the_do
   // move exact in doubles: the double engine is the oracle's trajectory here. Horizons 0 to 64, the
   // schedule's own and a list for each step alone, on one and two threads, after every step.
   const Circles w = exact_move_scene(12000);
-  Engine doubles(World(w), EngineOptions{.threads = 1});
+  DoubleEngine doubles(World(w), EngineOptions{.threads = 1});
   std::vector<ExactEngine> engines;
   for (const unsigned threads : {1u, 2u}) {
     engines.emplace_back(World(w), EngineOptions{.threads = threads, .keep_pairs = false});
@@ -581,7 +581,7 @@ TEST(exact_engine, lets_every_integer_wait_in_a_walking_list_and_still_equals_th
   // the next rebuild (settle), while world() and exact() add the pending ones. Every move exact, so the
   // double engine is the oracle.
   const Circles w = exact_move_scene(20000, 0.001);
-  Engine doubles(World(w), EngineOptions{.threads = 1});
+  DoubleEngine doubles(World(w), EngineOptions{.threads = 1});
   std::vector<ExactEngine> engines;
   for (const unsigned threads : {1u, 2u})
     for (const std::uint64_t h : {0u, 7u, 40u}) engines.emplace_back(World(w), kept(h, threads));
@@ -665,7 +665,7 @@ TEST(exact_engine, counts_its_work_as_the_double_engine_does) {
   // steps, lists and contacts.
   const Circles apart{{0, 0, 1, 0, 1}, {100, 0, -1, 0, 1}};
   ExactEngine exact(World(apart), EngineOptions{.threads = 1});
-  Engine doubles(World(apart), EngineOptions{.threads = 1});
+  DoubleEngine doubles(World(apart), EngineOptions{.threads = 1});
   for (int t = 0; t < 50; ++t) {
     exact.step();
     doubles.step();
@@ -677,7 +677,7 @@ TEST(exact_engine, counts_its_work_as_the_double_engine_does) {
   EXPECT_EQ(exact.stats().rebuilds, doubles.stats().rebuilds);
   const Circles busy = exact_move_scene(3000);
   ExactEngine e(World(busy), kept(8));
-  Engine d(World(busy), kept(8));
+  DoubleEngine d(World(busy), kept(8));
   for (int t = 0; t < 30; ++t) {
     e.step();
     d.step();

@@ -99,7 +99,7 @@ TEST(golden, the_default_scene_follows_the_rounded_oracle_in_every_build_and_thr
   EXPECT_EQ(hex(oracle.value()), hex(kGolden)) << "the oracle's trajectory";
   for (const unsigned threads : {1u, 2u, 4u})
     for (const bool skip : {true, false})
-      EXPECT_EQ(hex(engine_trajectory<Engine>(w, kSteps, {threads, skip})), hex(oracle.value()))
+      EXPECT_EQ(hex(engine_trajectory<DoubleEngine>(w, kSteps, {threads, skip})), hex(oracle.value()))
           << threads << " threads, skip quiet steps " << skip;
 }
 
@@ -121,7 +121,7 @@ TEST(golden, random_scenes_follow_their_golden_trajectories_in_every_build_and_t
   for (const Case& c : cases) {
     const Circles w = random_scene(c.circles, c.coverage, c.seed);
     for (const unsigned threads : {1u, 2u, 4u})
-      EXPECT_EQ(hex(engine_trajectory<Engine>(w, c.steps, {threads, true})), hex(c.golden))
+      EXPECT_EQ(hex(engine_trajectory<DoubleEngine>(w, c.steps, {threads, true})), hex(c.golden))
           << c.circles << " circles, coverage " << c.coverage << ", seed " << c.seed << ", " << threads
           << " threads";
   }

@@ -25,7 +25,7 @@ using spec::Q;
 // Steps `w` with a fixed list horizon and with step_all_pairs side by side; returns the first step at which
 // they differ (0: none within `steps`).
 int first_divergence(const Circles& w, std::uint64_t horizon, int steps) {
-  Engine e{World{w}, {.threads = 1, .keep_pairs = true, .horizon = horizon}};
+  DoubleEngine e{World{w}, {.threads = 1, .keep_pairs = true, .horizon = horizon}};
   World reference{w};
   for (int s = 1; s <= steps; ++s) {
     e.step();
@@ -42,10 +42,10 @@ int first_divergence(const Circles& w, std::uint64_t horizon, int steps) {
 // bit for bit through that list and the next, and the pair does meet: three steps past the horizon, circle 0
 // has circle 1's velocity.
 void expect_listed_and_met(const Circles& w, std::uint64_t h) {
-  Engine e{World{w}, {.threads = 1, .keep_pairs = true, .horizon = h}};
+  DoubleEngine e{World{w}, {.threads = 1, .keep_pairs = true, .horizon = h}};
   EXPECT_EQ(e.candidates(), (std::vector<CandidatePair>{{0, 1}})) << "H = " << h;
   EXPECT_EQ(first_divergence(w, h, static_cast<int>(h) + 3), 0) << "H = " << h;
-  Engine plain{World{w}, {.threads = 1, .keep_pairs = false}};
+  DoubleEngine plain{World{w}, {.threads = 1, .keep_pairs = false}};
   for (std::uint64_t s = 0; s < h + 3; ++s) plain.step();
   const std::array<double, 5> got = plain.world().circles()[0];
   EXPECT_TRUE(got[2] == w[1][2] && got[3] == w[1][3]) << "H = " << h << ": they never met";
@@ -144,14 +144,14 @@ TEST(pair_list, a_pair_that_meets_exactly_when_the_horizon_ends_is_listed_and_it
   for (const std::uint64_t h : {1u, 2u, 7u, 16u, 100u, 1000u}) {
     const double c = 1 + static_cast<double>(h);
     const Circles w{{-c, 0, 60, 0, 1}, {c, 0, -60, 0, 1}};
-    Engine e{World{w}, {.threads = 1, .keep_pairs = true, .horizon = h}};
+    DoubleEngine e{World{w}, {.threads = 1, .keep_pairs = true, .horizon = h}};
     const std::vector<CandidatePair> listed = e.candidates();
     EXPECT_EQ(listed, (std::vector<CandidatePair>{{0, 1}})) << "H = " << h;
     EXPECT_EQ(first_divergence(w, h, static_cast<int>(h) + 3), 0) << "H = " << h;
     // One step of gap more than the horizon covers: the pair cannot meet before the list ends, and is not
     // listed (the skin is not loose by a whole step either).
     const Circles farther{{-c - 1, 0, 60, 0, 1}, {c + 1, 0, -60, 0, 1}};
-    EXPECT_TRUE(Engine(World{farther}, {.threads = 1, .keep_pairs = true, .horizon = h}).candidates().empty())
+    EXPECT_TRUE(DoubleEngine(World{farther}, {.threads = 1, .keep_pairs = true, .horizon = h}).candidates().empty())
         << "H = " << h;
   }
 }
@@ -224,13 +224,13 @@ TEST(pair_list, every_horizon_and_thread_count_gives_the_same_bits_on_a_busy_wor
   Circles w;
   for (int k = 0; k < 3000; ++k)
     w.push_back({600 * unit(g), 600 * unit(g), 200 * unit(g) - 100, 200 * unit(g) - 100, 2 + 4 * unit(g)});
-  Engine plain{World{w}, {.threads = 1, .keep_pairs = false}};
+  DoubleEngine plain{World{w}, {.threads = 1, .keep_pairs = false}};
   for (int s = 0; s < 40; ++s) plain.step();
   const Circles want = plain.world().circles();
   EXPECT_GT(plain.stats().contacts, 1000u) << "too few contacts to mean anything";
   for (const unsigned threads : {1u, 2u})
     for (const std::uint64_t h : {0u, 1u, 2u, 5u, 17u, 64u}) {
-      Engine e{World{w}, {.threads = threads, .keep_pairs = true, .horizon = h}};
+      DoubleEngine e{World{w}, {.threads = threads, .keep_pairs = true, .horizon = h}};
       for (int s = 0; s < 40; ++s) e.step();
       EXPECT_EQ(e.world().circles(), want) << "H = " << h << ", " << threads << " threads";
       if (h > 0) {
