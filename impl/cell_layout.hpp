@@ -11,12 +11,11 @@
 //
 // A step (CellLayout::step): rebuild when the list's horizon has ended (the engine's rebuild calls horizon(),
 // arrange() and list()), the contacts of the listed pairs by the engine's pair test, the engine's move, the
-// statistics. The member templates that test pairs need impl/pair_list_impl.hpp, which only the engines'
-// .cpp files include. docs/engine.md draws the layout.
+// statistics. The member templates step, arrange and gather are defined in impl/cell_layout_impl.hpp, which
+// only the engines' .cpp files include (it needs the library's OpenMP flags). docs/engine.md draws the layout.
 #pragma once
 
 #include "impl/broad_phase.hpp"
-#include "impl/contacts.hpp"
 #include "impl/pair_list.hpp"
 
 #include <array>
@@ -90,24 +89,7 @@ class CellLayout {
   // One step: rebuild() when due, then the contacts by the pair test make_test() returns (called after the
   // rebuild, so that it reads the columns as arranged), then move(), then the statistics.
   template <class Rebuild, class MakeTest, class Move>
-  void step(EngineStats& stats, unsigned threads, Rebuild&& rebuild, MakeTest&& make_test, Move&& move) {
-    if (due(stats.steps)) rebuild();
-    std::size_t contacts = 0, tested = 0;
-    const std::uint64_t j = stats.steps - built_at_;  // this step's place in the list's horizon
-    if (!pairs_.quiet(j)) {
-      auto test = make_test();
-      contacts = pairs_.least_contacts(j, threads, least_, touched_, tested, test.intersect, test.precedes,
-                                       test.prefetch);
-    } else {
-      ++stats.quiet_steps;
-      for (std::vector<std::uint32_t>& list : touched_) list.clear();
-    }
-    move();
-    ++stats.steps;
-    stats.pairs_tested += tested;
-    stats.contacts += contacts;
-    stats.lonely_circle_steps += pairs_.lonely();
-  }
+  void step(EngineStats& stats, unsigned threads, Rebuild&& rebuild, MakeTest&& make_test, Move&& move);
 
   // The horizon of the next list: none without kept pairs, the options' fixed one, or the schedule's.
   std::uint64_t horizon(const EngineOptions& options) const noexcept {
@@ -121,26 +103,7 @@ class CellLayout {
   // changed, one gather of the id, the keys and every registered column (x, y and inflated among them).
   template <class... T>
   void arrange(unsigned threads, std::uint64_t horizon, const std::vector<double>& x, const std::vector<double>& y,
-               const std::vector<double>& inflated, Columns<T>... columns) {
-    const std::size_t n = id_.size();
-    if (horizon != planned_horizon_) {
-      grid_.plan(x, y, inflated);
-      planned_horizon_ = horizon;
-    }
-    next_key_.resize(n);
-    locate(grid_, threads, x, y, inflated, next_key_);
-    if (key_.size() != n) key_.clear();  // the first layout: no previous order to guide the sort
-    const bool sorted = order_.sort(next_key_, key_, permutation_, threads);
-    std::swap(key_, next_key_);
-    if (!sorted) {
-      // least_ is the identity between steps, so it stays.
-      (gather(threads, columns), ...);
-      scratch_id_.resize(n);
-      gather(threads, Columns<std::uint32_t>{scratch_id_, {&id_}});
-      gather(threads, Columns<CellKey>{next_key_, {&key_}});
-    }
-    index_levels(key_, level_begin_, levels_);
-  }
+               const std::vector<double>& inflated, Columns<T>... columns);
 
   // After arrange(): the list for the horizon, over the circles at (x, y) with radii `inflated` (as
   // arranged), each pair from its first step by `lister`; then the schedule's bookkeeping for a list built in
@@ -164,22 +127,7 @@ class CellLayout {
   // column[t] ← column[permutation[t]] for every registered column, per chunk. Values that own memory (GMP
   // integers) are swapped rather than copied (no allocation); the column is scratch afterwards either way.
   template <class T>
-  void gather(unsigned threads, const Columns<T>& set) {
-    const std::size_t n = id_.size();
-    const std::size_t chunks = chunk_count(n, threads);
-    set.scratch.resize(n);
-    for (std::vector<T>* column : set.columns) {
-      for_each_chunk(chunks, threads, [&](std::size_t c) {
-        for (std::size_t t = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1); t < e; ++t) {
-          if constexpr (std::is_trivially_copyable_v<T>)
-            set.scratch[t] = (*column)[permutation_[t]];
-          else
-            set.scratch[t].swap((*column)[permutation_[t]]);
-        }
-      });
-      column->swap(set.scratch);
-    }
-  }
+  void gather(unsigned threads, const Columns<T>& set);
 
   std::vector<std::uint32_t> id_, least_, permutation_, scratch_id_;
   std::vector<std::vector<std::uint32_t>> touched_;

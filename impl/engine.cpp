@@ -9,7 +9,7 @@
 // The slots keep their order between rebuilds: a step moves no circle in memory.
 #include "impl/engine.hpp"
 
-#include "impl/pair_list_impl.hpp"
+#include "impl/cell_layout_impl.hpp"
 
 #include <algorithm>
 #include <cmath>

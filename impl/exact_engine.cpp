@@ -14,7 +14,7 @@
 #include "impl/exact_engine.hpp"
 
 #include "impl/exact_bounds.hpp"
-#include "impl/pair_list_impl.hpp"
+#include "impl/cell_layout_impl.hpp"
 #include "impl/detail/exact_int.hpp"
 
 #include <gmp.h>

@@ -1,0 +1,74 @@
+// The member templates of CellLayout (impl/cell_layout.hpp) that run on the library's threads. Only the
+// engines' .cpp files include this header (it needs the library's OpenMP flags).
+#pragma once
+
+#include "impl/cell_layout.hpp"
+#include "impl/contacts.hpp"
+#include "impl/pair_list_impl.hpp"
+
+#include <type_traits>
+
+namespace circles::impl {
+
+template <class Rebuild, class MakeTest, class Move>
+void CellLayout::step(EngineStats& stats, unsigned threads, Rebuild&& rebuild, MakeTest&& make_test, Move&& move) {
+  if (due(stats.steps)) rebuild();
+  std::size_t contacts = 0, tested = 0;
+  const std::uint64_t j = stats.steps - built_at_;  // this step's place in the list's horizon
+  if (!pairs_.quiet(j)) {
+    auto test = make_test();
+    contacts = pairs_.least_contacts(j, threads, least_, touched_, tested, test.intersect, test.precedes,
+                                     test.prefetch);
+  } else {
+    ++stats.quiet_steps;
+    for (std::vector<std::uint32_t>& list : touched_) list.clear();
+  }
+  move();
+  ++stats.steps;
+  stats.pairs_tested += tested;
+  stats.contacts += contacts;
+  stats.lonely_circle_steps += pairs_.lonely();
+}
+
+template <class... T>
+void CellLayout::arrange(unsigned threads, std::uint64_t horizon, const std::vector<double>& x,
+                         const std::vector<double>& y, const std::vector<double>& inflated, Columns<T>... columns) {
+  const std::size_t n = id_.size();
+  if (horizon != planned_horizon_) {
+    grid_.plan(x, y, inflated);
+    planned_horizon_ = horizon;
+  }
+  next_key_.resize(n);
+  locate(grid_, threads, x, y, inflated, next_key_);
+  if (key_.size() != n) key_.clear();  // the first layout: no previous order to guide the sort
+  const bool sorted = order_.sort(next_key_, key_, permutation_, threads);
+  std::swap(key_, next_key_);
+  if (!sorted) {
+    // least_ is the identity between steps, so it stays.
+    (gather(threads, columns), ...);
+    scratch_id_.resize(n);
+    gather(threads, Columns<std::uint32_t>{scratch_id_, {&id_}});
+    gather(threads, Columns<CellKey>{next_key_, {&key_}});
+  }
+  index_levels(key_, level_begin_, levels_);
+}
+
+template <class T>
+void CellLayout::gather(unsigned threads, const Columns<T>& set) {
+  const std::size_t n = id_.size();
+  const std::size_t chunks = chunk_count(n, threads);
+  set.scratch.resize(n);
+  for (std::vector<T>* column : set.columns) {
+    for_each_chunk(chunks, threads, [&](std::size_t c) {
+      for (std::size_t t = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1); t < e; ++t) {
+        if constexpr (std::is_trivially_copyable_v<T>)
+          set.scratch[t] = (*column)[permutation_[t]];
+        else
+          set.scratch[t].swap((*column)[permutation_[t]]);
+      }
+    });
+    column->swap(set.scratch);
+  }
+}
+
+}  // namespace circles::impl
