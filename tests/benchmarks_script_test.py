@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
-"""scripts/benchmarks without running a benchmark: its engine section (issue 11's targets, judged at their
-bounds), the configurations it asks for, the filter that selects them, its check that each was measured, its
-plot, and its exit without matplotlib; and, given the benchmark programs, that every configuration it asks for
-is one they register.
+"""scripts/benchmarks without running a benchmark: its engine section (the engine targets, judged at their
+bounds, by the names of docs/benchmarks.md's Targets table), the configurations it asks for, the filter that
+selects them, its check that each was measured, its plot, and its exit without matplotlib; and, given the
+benchmark programs, that every configuration it asks for is one they register.
 
     benchmarks_script_test.py REPOSITORY report
     benchmarks_script_test.py REPOSITORY names ENGINE_BENCH [BOX2D_BENCH]
@@ -27,20 +27,46 @@ def measured_table(b, value):
     return {k: [value(*k)] * 3 for k in engine + box2d}
 
 
-def render(b, table, sizes=None):
+def render_args():
     args = argparse.Namespace(quick=False, repetitions=3, build_dir="build-benchmarks", argv=[])
     info = {k: "?" for k in ("cpu", "cores", "memory", "os", "kernel", "compiler", "flags", "benchmark", "box2d")}
     info["arch"], info["arch_setting"] = "x86-64-v3", "auto"
     started = datetime.datetime(2026, 12, 1, tzinfo=datetime.timezone.utc)
-    return b.render(table, args, info, (0.1, 0.1, 0.1), started, True, sizes or b.SIZES)
+    return args, info, (0.1, 0.1, 0.1), started
+
+
+def render(b, table, sizes=None):
+    args, info, load, started = render_args()
+    return b.render(table, args, info, load, started, True, sizes or b.SIZES)
+
+
+def render_conform(b):
+    """The conform section of a run that measured nothing: its targets table, every target not measured."""
+    args, info, load, started = render_args()
+    return b.render_conform({}, args, info, load, started)
 
 
 def verdicts(section):
-    """{target number: [verdicts of its rows]} from the targets table."""
+    """{target name: [verdicts of its rows]} from a section's targets table ("the growth target, dense" is a row
+    of the growth target)."""
     found = {}
-    for m in re.finditer(r"^\| (\d)\. .*\| ([^|]*) \|$", section, re.M):
-        found.setdefault(int(m.group(1)), []).append(m.group(2))
+    for m in re.finditer(r"^\| (the [^|,]+ target)(?:, \w+)? \| [^|]* \| [^|]* \| ([^|]*) \|$", section, re.M):
+        found.setdefault(m.group(1), []).append(m.group(2))
     return found
+
+
+def targets_table(repository):
+    """The target names of docs/benchmarks.md's section "## Targets", its table's first column."""
+    lines = (Path(repository) / "docs" / "benchmarks.md").read_text().splitlines()
+    assert "## Targets" in lines, "docs/benchmarks.md has no section ## Targets"
+    names = set()
+    for line in lines[lines.index("## Targets") + 1:]:
+        if line.startswith("## "):
+            break
+        m = re.match(r"^\| (the [^|]+ targets?) \|", line)
+        if m:
+            names.add(m.group(1))
+    return names
 
 
 def meeting(family, n, coverage, threads):
@@ -52,14 +78,25 @@ def meeting(family, n, coverage, threads):
     return base / (1.9 if threads == 2 else 1)
 
 
-def check_report(b):
+def check_report(b, repository):
     table = measured_table(b, meeting)
     section = render(b, table)
-    assert verdicts(section) == {1: ["met"], 2: ["met"], 3: ["met"], 4: ["met", "met"], 5: ["met"], 6: ["met"],
-                                 7: ["met"]}, verdicts(section)
+    assert verdicts(section) == {"the dense target": ["met"], "the sparse target": ["met"],
+                                 "the Box2D target": ["met"], "the growth target": ["met", "met"],
+                                 "the two-thread target": ["met"], "the exact-engine target": ["met"],
+                                 "the sweeps target": ["met"]}, verdicts(section)
     assert "Every target is met." in section
-    assert "against the targets of issue 3" not in section, "the issue-3 targets are gone from the section"
     assert f"]({b.PLOT})" in section, "the section links the plot"
+
+    # The targets the sections judge are those docs/benchmarks.md's Targets table names, which they link, so that
+    # a regenerated section and the table above it speak of the same targets.
+    assert section.startswith(f"{b.BEGIN}\n\n## The engines (`impl/`) against the engine targets\n"), section[:200]
+    assert "([Targets](#targets) above)" in section, "the engine section does not link the Targets table"
+    named = targets_table(repository)
+    conform = render_conform(b)
+    judged = set(verdicts(section)) | set(verdicts(conform))
+    assert {"the conform throughput target", "the protocol overhead target"} <= judged, verdicts(conform)
+    assert judged <= named, f"the sections judge targets docs/benchmarks.md's Targets table lacks: {judged - named}"
 
     # Each target turns at its bound: a figure just past it is not met, and names that target only.
     def past(key, factor, target):
@@ -69,21 +106,23 @@ def check_report(b):
         failed = [t for t, vs in got.items() if any(v != "met" for v in vs)]
         assert failed == [target], f"{key} × {factor}: targets {failed} not met, expected only {target}"
 
-    past(("double_engine", 10**6, 10, 1), 0.36 / 0.30, 1)           # 0.36× the grid
-    past(("streaming_floor", 10**6, 0.1, 1), 6.0 / 3.1 / 2.5, 2)   # the floor at 1.94: 3.1×
-    past(("box2d", 10**5, 10, 1), 199 / 250, 3)                     # 199×
-    past(("exact_engine", 10**3, 10, 1), 1 / 1.51, 4)               # the exact engine grows 1.51× dense
-    past(("double_engine", 10**6, 10, 2), 1.9 / 1.79, 5)             # two threads 1.79×
-    past(("exact_engine", 10**6, 0.1, 1), 1.26 / 1.2, 6)            # 1.26× sparse
+    past(("double_engine", 10**6, 10, 1), 0.36 / 0.30, "the dense target")          # 0.36× the grid
+    past(("streaming_floor", 10**6, 0.1, 1), 6.0 / 3.1 / 2.5, "the sparse target")  # the floor at 1.94: 3.1×
+    past(("box2d", 10**5, 10, 1), 199 / 250, "the Box2D target")                    # 199×
+    past(("exact_engine", 10**3, 10, 1), 1 / 1.51, "the growth target")             # the exact engine grows 1.51× dense
+    past(("double_engine", 10**6, 10, 2), 1.9 / 1.79, "the two-thread target")      # two threads 1.79×
+    past(("exact_engine", 10**6, 0.1, 1), 1.26 / 1.2, "the exact-engine target")    # 1.26× sparse
     # At the bound itself, the target holds.
     at_bound = dict(table)
     at_bound[("double_engine", 10**6, 10, 1)] = [35.0] * 3
-    assert verdicts(render(b, at_bound))[1] == ["met"], "0.35× the grid meets target 1"
+    assert verdicts(render(b, at_bound))["the dense target"] == ["met"], "0.35× the grid meets the dense target"
 
     # A run without 10^6 circles (--quick) measures neither the targets at 10^6 nor the sweeps.
     engine, box2d = b.configurations(b.QUICK_SIZES)
     quick = render(b, {k: [meeting(*k)] for k in engine + box2d}, b.QUICK_SIZES)
-    assert "Not measured in this run: targets 1, 2, 3, 4, 5, 6, 7." in quick, quick
+    assert ("Not measured in this run: the dense target; the sparse target; the Box2D target; the growth target, "
+            "dense; the growth target, sparse; the two-thread target; the exact-engine target; the sweeps target."
+            in quick), quick
 
     # The plot: every family drawn, no date, and the same figures give the same file.
     svg = b.plot_svg(table, b.SIZES)
@@ -160,7 +199,7 @@ def main():
     repository, mode = sys.argv[1], sys.argv[2]
     b = load(repository)
     if mode == "report":
-        check_report(b)
+        check_report(b, repository)
         check_without_matplotlib(b)
     elif mode == "names":
         check_names(b, sys.argv[3], sys.argv[4] if len(sys.argv) > 4 else None)
