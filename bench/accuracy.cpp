@@ -218,7 +218,7 @@ volatile std::sig_atomic_t stop_requested = 0;
 extern "C" void request_stop(int) { stop_requested = 1; }
 
 // The exact engine against swept_step on every scene file DIR/*.json in file name order (or on those named
-// in `only`, in that order), for `steps` steps each: issue 4's "zero error over 10^6 steps" target. The CSV
+// in `only`, in that order), for `steps` steps each: the zero-error target (docs/benchmarks.md, Targets). The CSV
 // is rewritten every kCheckpointSteps steps and when a stop is requested, so that a long run that is cut
 // short still says how many steps it checked. Returns 1 if a scene differs (after the other scenes).
 constexpr std::uint64_t kCheckpointSteps = 100'000;

@@ -1,9 +1,10 @@
-// Box2D 2.4.1 (the Debian package) on the scenes of engine_bench, for issue 11's target ">= 200x Box2D's time per
-// step at 10^5 circles, 10% coverage" and its size and coverage sweeps: dynamic circle bodies with the scene's
-// radii, positions and velocities, zero gravity, restitution 1 and no friction (the spec's collisions are elastic
-// velocity exchanges), mass 1 (the spec's unit masses), and world steps of 1/60 with the iteration counts of Box2D's
-// own testbed (8 velocity, 3 position). Box2D works in float; the scene's doubles are rounded to it. Timed like
-// every other stepper (bench/harness.hpp); names follow engine_bench's, family "box2d".
+// Box2D 2.4.1 (the Debian package) on the scenes of engine_bench, for the Box2D target (Box2D's time per step at
+// least 200 times the double engine's at 10^5 circles, 10% coverage; docs/benchmarks.md, Targets) and the size and
+// coverage sweeps: dynamic circle bodies with the scene's radii, positions and velocities, zero gravity,
+// restitution 1 and no friction (the spec's collisions are elastic velocity exchanges), mass 1 (the spec's unit
+// masses), and world steps of 1/60 with the iteration counts of Box2D's own testbed (8 velocity, 3 position).
+// Box2D works in float; the scene's doubles are rounded to it. Timed like every other stepper
+// (bench/harness.hpp); names follow engine_bench's, family "box2d".
 #include "bench/harness.hpp"
 #include "impl/random_scene.hpp"
 
@@ -21,15 +22,15 @@
 namespace circles::bench {
 namespace {
 
-// Issue 11's coverage sweep at every size up to 10^5 (scripts/benchmarks runs the size sweep at 10% and the
+// The coverage sweep at every size up to 10^5 (scripts/benchmarks runs the size sweep at 10% and the
 // coverage sweep at its largest size). Not 10^6: a step would take ten seconds or more there (the time per
-// circle-step grew 3.6-fold from 10^4 to 10^5 in issue 3's run, 3.7 to 13.3 µs), too long for the run of record.
+// circle-step grew 3.6-fold from 10^4 to 10^5 in one run, 3.7 to 13.3 µs), too long for the run of record.
 constexpr std::size_t kSizes[] = {1'000, 10'000, 100'000};
 constexpr double kCoverages[] = {0.001, 0.01, 0.10, 0.40};
 constexpr float kDt = 1.0f / 60;
 constexpr int kVelocityIterations = 8;  // b2 testbed defaults (testbed/settings.h)
 constexpr int kPositionIterations = 3;
-// Box2D took 598 ms per step at 10^5 bodies (issue 3): 5 timed steps there keep a repetition near 3 s.
+// Box2D took 598 ms per step at 10^5 bodies in one run: 5 timed steps there keep a repetition near 3 s.
 std::size_t steps_for(std::size_t n) { return n < 100'000 ? kStepsPerStepper : 5; }
 
 class Box2DScene {

@@ -1,6 +1,7 @@
-// The speed of `circles conform` (issue 5, point 5): worlds checked per second in process, and what the step
-// protocol adds per request beyond the candidate's own time. scripts/benchmarks runs this program and writes
-// the conform section of docs/benchmarks.md from its JSON output.
+// The speed of `circles conform`: worlds checked per second in process, and what the step protocol adds per
+// request beyond the candidate's own time (the conform throughput and protocol overhead targets,
+// docs/benchmarks.md, Targets). scripts/benchmarks runs this program and writes the conform section of
+// docs/benchmarks.md from its JSON output.
 //
 // Every benchmark works on the cases conform draws by default: seed kSeed, kRounds rounds of one case per
 // boundary family (properties/boundaries.hpp), worlds of up to 8 circles, level exact. The "asked" worlds are

@@ -1,8 +1,8 @@
 // The engines' cost per circle-step and, in the same run, what it is measured against: the same engine with
 // naive arithmetic, all-pairs steps, a plain uniform grid, and the streaming floor; the double engine
 // (impl::DoubleEngine, family double_engine) and the exact engine (impl::ExactEngine, family exact_engine) at every
-// coverage of issue 11's sweep, and at 10% coverage also on the scene rounded to multiples of 2^-20 (families
-// *_coarse, both engines; issue 4), which the exact engine holds in 64-bit integers.
+// coverage of the coverage sweep, and at 10% coverage also on the scene rounded to multiples of 2^-20 (families
+// *_coarse, both engines), which the exact engine holds in 64-bit integers.
 // Every scene is impl::random_scene(n, coverage, kSceneSeed); bench/harness.hpp says how steps are timed.
 // scripts/benchmarks runs this program and writes docs/benchmarks.md from its JSON output.
 //
@@ -26,13 +26,13 @@ namespace circles::bench {
 namespace {
 
 constexpr std::size_t kSizes[] = {1'000, 10'000, 100'000, 1'000'000};
-// Issue 11's coverage sweep: 0.1% is its sparse scene (its target: within 3 times the streaming floor), 10% its
-// dense one.
+// The coverage sweep: 0.1% is the sparse scene (the sparse target: within 3 times the streaming floor), 10% the
+// dense one (docs/benchmarks.md, Targets).
 constexpr double kCoverages[] = {0.001, 0.01, 0.10, 0.40};
 constexpr double kSparseCoverage = 0.001;
-constexpr double kTargetCoverage = 0.10;  // the issue's targets are at 10% coverage
+constexpr double kTargetCoverage = 0.10;  // the dense scene, where most engine targets are judged
 constexpr unsigned kThreadCounts[] = {1, 2};
-// All-pairs steps cost O(n²): 1.3 ms at 10^3 and 130 ms at 10^4 circles (issue 3), so they stop at 10^4 and
+// All-pairs steps cost O(n²): 1.3 ms at 10^3 and 130 ms at 10^4 circles in one run, so they stop at 10^4 and
 // take fewer steps there, for about a second per repetition.
 constexpr std::size_t kAllPairsMax = 10'000;
 std::size_t all_pairs_steps(std::size_t n) { return n < kAllPairsMax ? kStepsPerStepper : 5; }
@@ -80,7 +80,7 @@ void register_baseline(const std::string& family, std::size_t n, std::size_t cop
 
 void register_all() {
   for (const std::size_t n : kSizes) {
-    // Every family at every coverage: issue 11's coverage sweep (scripts/benchmarks picks the configurations it
+    // Every family at every coverage: the coverage sweep (scripts/benchmarks picks the configurations it
     // runs). The plain grid is dense over the centres' bounding box: at 0.1% coverage and 10^6 circles that is
     // (side / 12)² = 10^6 · 54.5 / 0.001 / 144 = 3.8·10^8 cells (54.5 = π·E[r²], bench/harness.hpp), past its
     // cap of 2^28, so it starts at 1%.

@@ -1,4 +1,4 @@
-// The benchmark scenes of issue 3: n circles with radii uniform in [2, 6], velocities uniform in the disc
+// The benchmark scenes: n circles with radii uniform in [2, 6], velocities uniform in the disc
 // |v| ≤ 100, and centres uniform in a square whose side makes the circles' areas sum to `coverage` of it
 // (overlaps allowed, so the covered fraction of the plane is somewhat less).
 //

@@ -1,4 +1,4 @@
-// The gallery: deliberately wrong step functions, the realistic mistakes of issue 5 that `circles conform` with
+// The gallery: deliberately wrong step functions, realistic mistakes that `circles conform` with
 // its default budget (1000 cases, one step, level exact, resolved profile) must reject. One step function with a
 // knob per mistake, so that each entry differs from the correct step (every knob off) in exactly one way.
 // Checked two ways: in process (tests/gallery_test.cpp) and through the `circles` program over the step
@@ -34,7 +34,7 @@ struct GalleryEntry {
   Mistakes mistakes;
 };
 
-// Every wrong implementation, in the order of issue 5's list.
+// Every wrong implementation, in the order of docs/conform.md's table ("The gallery of wrong implementations").
 const std::vector<GalleryEntry>& gallery();
 
 // The entry called `name`, or the correct step for "none"; nullptr for any other name.

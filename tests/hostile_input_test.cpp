@@ -1,7 +1,8 @@
-// Hostile input to the readers of scene files and protocol lines (issue 6, point 5): each case is refused with
-// the typed error (SceneError, ProtocolError: exit code 2 in `circles`) and a message naming the file or line,
-// the place and the reason, never a crash. The cases tests/scene_test.cpp and tests/protocol_test.cpp already
-// check are not repeated here; fuzz/ throws random bytes at the same readers (docs/hardening.md).
+// Hostile input to the readers of scene files and protocol lines (the hostile cases of docs/hardening.md): each
+// case is refused with the typed error (SceneError, ProtocolError: exit code 2 in `circles`) and a message
+// naming the file or line, the place and the reason, never a crash. The cases tests/scene_test.cpp and
+// tests/protocol_test.cpp already check are not repeated here; fuzz/ throws random bytes at the same readers
+// (docs/hardening.md).
 #include "formats/protocol.hpp"
 #include "formats/scene.hpp"
 #include "tests/temp_dir.hpp"
