@@ -4,6 +4,7 @@
 #include "formats/scene.hpp"
 
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
@@ -17,12 +18,13 @@ SceneWorld world_of(const SceneOptions& scene, const engines::EngineEntry& engin
   const RandomOptions& r = scene.random;
   switch (scene.source()) {
     case SceneOptions::Source::random:
-      return {.circles = random_world(r.circles, r.coverage, r.seed, engine.bytes_per_circle)};
+      return {.name = std::nullopt, .steps = std::nullopt,
+              .circles = random_world(r.circles, r.coverage, r.seed, engine.bytes_per_circle)};
     case SceneOptions::Source::file: return load_scene_world(scene.path);
     case SceneOptions::Source::embedded: break;
   }
   const Scene s = default_scene();
-  return {.steps = s.steps, .circles = doubles_of(s)};
+  return {.name = std::nullopt, .steps = s.steps, .circles = doubles_of(s)};
 }
 
 // After an overflow: where it stopped, and what each output holds.

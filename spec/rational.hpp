@@ -20,6 +20,14 @@ using Z = boost::multiprecision::number<boost::multiprecision::gmp_int, boost::m
 
 // A point or velocity of ℝ², held exactly.
 using Vec2 = Eigen::Matrix<Q, 2, 1>;
+// Eigen aligns a fixed-size matrix to as much as the instruction set's widest vector: 16 bytes for SSE, 32
+// with AVX (-march=x86-64-v3, which the engines may be built with). A Vec2 is 64 bytes, so its alignment,
+// and with it the layout of every Circle, would differ between a file built with AVX and one without, and a
+// Circle passed between them would be read at the wrong offsets. circles::spec pins Eigen's alignment for
+// every file that uses it (EIGEN_MAX_ALIGN_BYTES=16, spec/CMakeLists.txt); a file that includes this header
+// without it, with AVX on, stops here instead of linking.
+static_assert(alignof(Vec2) <= 16, "spec::Vec2's layout depends on the instruction set: build with "
+                                   "EIGEN_MAX_ALIGN_BYTES=16, as the target circles::spec sets it");
 
 // The exact value of a finite double. Every finite double is a dyadic rational, so this is exact.
 // Throws std::domain_error for NaN and ±infinity, which have no value in Q.
