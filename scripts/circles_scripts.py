@@ -1,17 +1,20 @@
 """What scripts/benchmarks and scripts/accuracy share: running a build or benchmark step, describing the machine a
-run took place on, rewriting the generated section of a Markdown document, and writing a file so that a failed
-run leaves it as it was.
+run took place on, filling a Markdown template of scripts/templates/, rewriting the generated section of a
+Markdown document, and writing a file so that a failed run leaves it as it was.
 
 The scripts import it from their own directory, whatever the working directory (scripts/benchmarks and
 scripts/accuracy put it on sys.path first). Standard library only.
 """
 import os
 import pathlib
+import re
 import shlex
+import string
 import subprocess
 import tempfile
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent  # the repository
+TEMPLATES = pathlib.Path(__file__).resolve().parent / "templates"
 
 
 class Failure(Exception):
@@ -49,6 +52,42 @@ def cpu_model(default="?"):
         if line.startswith("Model name:"):
             return line.split(":", 1)[1].strip()
     return default
+
+
+class MarkdownTemplate(string.Template):
+    """The prose of a generated section, scripts/templates/NAME: Markdown with $placeholders (string.Template;
+    $$ is a dollar sign), read when the script starts, so that a missing or malformed template stops it before a
+    long run rather than after. NAME ends in .md.in, not .md: the tests that read every Markdown file of the
+    repository would take a template's links, written for the document it fills, for broken ones.
+
+    Its paragraphs and list items may be wrapped like the hand-written docs: each is written as one line, as the
+    generated sections have them. A line continues the one above unless it is blank, starts with "#", "|" or
+    "- ", or the line above is a heading or a table row (so table rows are never wrapped). A placeholder that
+    stands alone as a paragraph and is given an empty value leaves no blank lines behind."""
+
+    def __init__(self, name):
+        self.name = name
+        lines = []
+        for line in (TEMPLATES / name).read_text(encoding="utf-8").splitlines():
+            if line.strip() and not line.startswith(("#", "|", "- ")) and lines and lines[-1] \
+                    and not lines[-1].startswith(("#", "|")):
+                lines[-1] += " " + line.strip()
+            else:
+                lines.append(line)
+        super().__init__("\n".join(lines) + "\n")
+        if not self.is_valid():
+            raise ValueError(f"scripts/templates/{name}: a $ that starts no placeholder (write $$ for a dollar sign)")
+
+    def fill(self, **values):
+        """The text with every placeholder replaced by its value; raises ValueError unless `values` names exactly
+        the template's placeholders, so that the template and the script cannot drift apart unnoticed."""
+        missing = [f"${name}" for name in self.get_identifiers() if name not in values]
+        unused = [name for name in values if name not in self.get_identifiers()]
+        if missing or unused:
+            raise ValueError(f"scripts/templates/{self.name}: "
+                             + "; ".join((["no value for " + ", ".join(missing)] if missing else [])
+                                         + (["no placeholder for " + ", ".join(unused)] if unused else [])))
+        return re.sub(r"\n{3,}", "\n\n", self.substitute(values))
 
 
 def marked_section(begin, body, end):
