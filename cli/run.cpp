@@ -30,7 +30,7 @@ namespace {
 View fitted_view(const Circles& world, const RunOptions& options, Progress& progress) {
   Box box;
   box.add(world);
-  const auto stepper = options.engine->start(world, options.threads);
+  const auto stepper = options.engine->start(world, options.threads, options.steps);
   while (stepper->steps() < options.steps) {
     try {
       stepper->step();
@@ -131,7 +131,7 @@ RunResult run(Circles world, const RunOptions& options) {
     if (pictures && t % options.every == 0) draw(*frame, w ? *w : stepper.circles(), view, t, frames, video, result);
   };
 
-  const auto stepper = options.engine->start(world, options.threads);
+  const auto stepper = options.engine->start(world, options.threads, options.steps);
   record(0, &world, *stepper);
   // The stepper keeps w_0 in its own form: the copy given to run() is no longer needed (10^7 circles: 400 MB).
   Circles().swap(world);

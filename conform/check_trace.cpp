@@ -91,7 +91,7 @@ TraceCheck check_trace(TraceReader& reader, TraceReference kind) {
 
 Comparison compare_with_oracle(const engines::EngineEntry& engine, const Circles& world, std::uint64_t steps, unsigned threads) {
   const auto oracle = engines::reference(engine, world);
-  const auto candidate = engine.start(world, threads);
+  const auto candidate = engine.start(world, threads, steps);
   // The engine's worlds as a chain's answers (properties/chain.hpp), each against the oracle's, compared by value
   // (-0 == +0, every field exactly): the oracle keeps its own sequence, the same worlds while the two agree.
   properties::Chain chain(world, steps);

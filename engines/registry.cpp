@@ -34,8 +34,8 @@ namespace {
 template <class E>
 class ImplStepper final : public Stepper {
  public:
-  ImplStepper(const Circles& world, unsigned threads)
-      : engine_(impl::World(world), impl::EngineOptions{.threads = threads}) {}
+  ImplStepper(const Circles& world, unsigned threads, std::uint64_t steps)
+      : engine_(impl::World(world), impl::EngineOptions{.threads = threads, .steps = steps}) {}
   Circles circles() const override { return engine_.world().circles(); }
   formats::CircleSource source() const override {
     if constexpr (requires { engine_.slots(); }) {
@@ -71,7 +71,7 @@ class ImplStepper final : public Stepper {
 // spec::resolved_step_rounded: the exact step in rationals, rounded. Slow, and the reference of every other.
 class OracleStepper final : public Stepper {
  public:
-  OracleStepper(const Circles& world, unsigned) : world_(world) {}
+  OracleStepper(const Circles& world, unsigned, std::uint64_t) : world_(world) {}
   Circles circles() const override { return world_; }
   formats::CircleSource source() const override { return formats::source_of(world_); }
 
@@ -113,8 +113,8 @@ class ExactOracleStepper final : public Stepper {
 };
 
 template <class S>
-std::unique_ptr<Stepper> start(const Circles& world, unsigned threads) {
-  return std::make_unique<S>(world, threads);
+std::unique_ptr<Stepper> start(const Circles& world, unsigned threads, std::uint64_t steps) {
+  return std::make_unique<S>(world, threads, steps);
 }
 
 // bytes_per_circle: the peak resident memory of `circles run --engine NAME` on random scenes (/usr/bin/time's
@@ -168,11 +168,11 @@ const EngineEntry& engine(std::string_view name) {
 
 std::unique_ptr<Stepper> reference(const EngineEntry& engine, const Circles& world) {
   if (engine.exact) return std::make_unique<ExactOracleStepper>(world);
-  return engines::engine("oracle").start(world, 1);
+  return engines::engine("oracle").start(world, 1, 0);
 }
 
 Circles step_once(const EngineEntry& engine, const Circles& world, unsigned threads) {
-  const auto stepper = engine.start(world, threads);
+  const auto stepper = engine.start(world, threads, 1);
   stepper->step();
   return stepper->circles();
 }

@@ -83,8 +83,9 @@ struct EngineEntry {
   // random world (formats::random_world). Measured, not derived: registry.cpp gives the figures.
   std::size_t bytes_per_circle;
   // A stepper at w_0 = `world` (circles of C in the resolved profile) using up to `threads` threads (0: all
-  // cores; engines without threads ignore it).
-  std::unique_ptr<Stepper> (*start)(const Circles& world, unsigned threads);
+  // cores; engines without threads ignore it), for a run of `steps` steps when the caller knows it (0: not
+  // known), which an engine plans for (impl::EngineOptions::steps). It still takes any number of steps.
+  std::unique_ptr<Stepper> (*start)(const Circles& world, unsigned threads, std::uint64_t steps);
 };
 
 // Every engine, in the order --help lists them.

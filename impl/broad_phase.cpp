@@ -1,6 +1,7 @@
 // The cell grid and the cell order; the conservativeness argument is in broad_phase.hpp.
 #include "impl/broad_phase.hpp"
 
+#include "impl/buffers.hpp"
 #include "impl/contacts.hpp"
 #include "impl/predicate.hpp"
 
@@ -144,7 +145,7 @@ void sort_slot_ordered(std::span<Entry> list, std::vector<Entry>& scratch) {
   CellKey differ = 0;
   for (const Entry& e : list) differ |= e.key ^ list.front().key;
   if (differ == 0) return;  // one key: slot order is the order
-  scratch.resize(list.size());
+  resize_buffer(scratch, list.size());
   std::span<Entry> from = list, to = scratch;
   constexpr std::size_t kRadix = std::size_t{1} << kRadixBits;
   std::array<std::uint32_t, kRadix> at;  // CellOrder::sort takes fewer than 2^32 slots
@@ -190,6 +191,8 @@ void CellOrder::Chunk::split(std::span<const CellKey> keys, std::span<const Cell
                              std::size_t end, std::span<const CellKey> splitters, std::size_t part) {
   for (std::vector<Entry>* list : {&same, &up, &down, &other, &foreign, &incoming}) list->clear();
   const bool guided = previous.size() == keys.size();
+  // Room for every slot in the list most of them go to: `same` when guided, else `other`.
+  reserve_buffer(guided ? same : other, end - begin);
   // Part c holds the keys k with splitters[c] ≤ k < splitters[c + 1]; the first part has no lower bound and
   // the last no upper one.
   const std::size_t parts = splitters.size() - 1;
@@ -236,6 +239,15 @@ void CellOrder::Chunk::merge_into(std::span<std::uint32_t> out) {
   repair(down, spare);
   sort_slot_ordered(std::span<Entry>(other), spare);
   sort_slot_ordered(std::span<Entry>(incoming), spare);
+  if (same.empty() && up.empty() && down.empty() && incoming.empty()) {
+    // Everything in `other` (always so in the first layout, which has no previous keys to guide it): `other`
+    // is the order. It and the radix sort's scratch held every slot, and the guided sorts after the first
+    // layout fill `same` instead, so both are given back (at 10^7 circles, 320 MB).
+    for (std::size_t at = 0; at < other.size(); ++at) out[at] = other[at].slot;
+    std::vector<Entry>().swap(other);
+    std::vector<Entry>().swap(spare);
+    return;
+  }
   // Merge the small lists first, then the large one once.
   spare.resize(up.size() + down.size());
   std::merge(up.begin(), up.end(), down.begin(), down.end(), spare.begin(), kBefore);
@@ -258,7 +270,7 @@ bool CellOrder::sort(std::span<const CellKey> keys, std::span<const CellKey> pre
   const std::size_t n = keys.size();
   if (n > std::numeric_limits<std::uint32_t>::max())
     throw std::invalid_argument("CellOrder::sort: more than 2^32 - 1 slots");
-  order.resize(n);
+  resize_buffer(order, n);
   // Already sorted (a quiet world, or one whose circles all kept their cells): the identity.
   if (std::is_sorted(keys.begin(), keys.end())) {
     for (std::size_t s = 0; s < n; ++s) order[s] = static_cast<std::uint32_t>(s);

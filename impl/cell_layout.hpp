@@ -16,8 +16,10 @@
 #pragma once
 
 #include "impl/broad_phase.hpp"
+#include "impl/buffers.hpp"
 #include "impl/pair_list.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -40,6 +42,10 @@ struct EngineOptions {
   // The horizon of every list, in steps, instead of HorizonSchedule's choice (0 means that choice); for tests
   // and benchmarks. With keep_pairs false it is ignored. Results are the same bits for every value.
   std::uint64_t horizon = 0;
+  // The steps the engine will be asked for, when the caller knows (0: not known). No list then looks past the
+  // last of them: a list built in step s serves steps s to s + H, so H ≤ steps − s − 1, and a 1-step run
+  // lists only the pairs that touch now, with no skin. Results are the same bits for every value.
+  std::uint64_t steps = 0;
 };
 
 // The columns of one element type an engine keeps by slot, for arrange() to gather into the new cell order,
@@ -64,8 +70,10 @@ PairTest(I, P, F) -> PairTest<I, P, F>;
 class CellLayout {
  public:
   // n circles, slot k holding circle k until the first rebuild sorts them; every slot its own least contact.
-  explicit CellLayout(std::size_t n = 0) : id_(n), least_(n) {
+  explicit CellLayout(std::size_t n = 0) {
+    resize_buffer(id_, n);
     std::iota(id_.begin(), id_.end(), std::uint32_t{0});
+    resize_buffer(least_, n);
     least_ = id_;
   }
 
@@ -91,9 +99,11 @@ class CellLayout {
   template <class Rebuild, class MakeTest, class Move>
   void step(EngineStats& stats, unsigned threads, Rebuild&& rebuild, MakeTest&& make_test, Move&& move);
 
-  // The horizon of the next list: none without kept pairs, the options' fixed one, or the schedule's.
-  std::uint64_t horizon(const EngineOptions& options) const noexcept {
-    return !options.keep_pairs ? 0 : options.horizon > 0 ? options.horizon : schedule_.horizon();
+  // The horizon of the list built in the step numbered `steps` (steps taken so far): none without kept pairs,
+  // the options' fixed one, or the schedule's; cut to the options' last step when they give one.
+  std::uint64_t horizon(const EngineOptions& options, std::uint64_t steps) const noexcept {
+    const std::uint64_t chosen = !options.keep_pairs ? 0 : options.horizon > 0 ? options.horizon : schedule_.horizon();
+    return options.steps > steps ? std::min(chosen, options.steps - steps - 1) : chosen;
   }
   // A horizon whose skin was not finite: the list covers its own world, and so does the schedule's next.
   void collapse() noexcept { schedule_.collapse(); }
@@ -116,7 +126,9 @@ class CellLayout {
     built_at_ = stats.steps;
     stats.pairs_listed += pairs_.size();
     ++stats.rebuilds;
-    if (options.keep_pairs && options.horizon == 0) schedule_.update(pairs_.tests(), id_.size());
+    // The schedule learns from lists of its own horizon; a list cut to the run's end is the run's last.
+    if (options.keep_pairs && options.horizon == 0 && horizon == schedule_.horizon())
+      schedule_.update(pairs_.tests(), id_.size());
     rebuild_at_ = stats.steps + horizon + 1;
   }
 

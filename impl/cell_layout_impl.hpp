@@ -38,7 +38,7 @@ void CellLayout::arrange(unsigned threads, std::uint64_t horizon, const std::vec
     grid_.plan(x, y, inflated);
     planned_horizon_ = horizon;
   }
-  next_key_.resize(n);
+  resize_buffer(next_key_, n);
   locate(grid_, threads, x, y, inflated, next_key_);
   if (key_.size() != n) key_.clear();  // the first layout: no previous order to guide the sort
   const bool sorted = order_.sort(next_key_, key_, permutation_, threads);
@@ -46,7 +46,7 @@ void CellLayout::arrange(unsigned threads, std::uint64_t horizon, const std::vec
   if (!sorted) {
     // least_ is the identity between steps, so it stays.
     (gather(threads, columns), ...);
-    scratch_id_.resize(n);
+    resize_buffer(scratch_id_, n);
     gather(threads, Columns<std::uint32_t>{scratch_id_, {&id_}});
     gather(threads, Columns<CellKey>{next_key_, {&key_}});
   }
@@ -57,7 +57,7 @@ template <class T>
 void CellLayout::gather(unsigned threads, const Columns<T>& set) {
   const std::size_t n = id_.size();
   const std::size_t chunks = chunk_count(n, threads);
-  set.scratch.resize(n);
+  resize_buffer(set.scratch, n);
   for (std::vector<T>* column : set.columns) {
     for_each_chunk(chunks, threads, [&](std::size_t c) {
       for (std::size_t t = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1); t < e; ++t) {

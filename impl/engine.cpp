@@ -9,6 +9,7 @@
 // The slots keep their order between rebuilds: a step moves no circle in memory.
 #include "impl/engine.hpp"
 
+#include "impl/buffers.hpp"
 #include "impl/cell_layout_impl.hpp"
 
 #include <algorithm>
@@ -34,11 +35,7 @@ World::World(const std::vector<std::array<double, 5>>& circles) {
   if (n > std::numeric_limits<std::uint32_t>::max())
     throw std::length_error("World: " + std::to_string(n) + " circles; at most 2^32 - 1");
   for (std::size_t k = 0; k < n; ++k) spec::check_doubles(circles[k], k, spec::Radii::non_negative);
-  px_.resize(n);
-  py_.resize(n);
-  vx_.resize(n);
-  vy_.resize(n);
-  r_.resize(n);
+  for (std::vector<double>* field : {&px_, &py_, &vx_, &vy_, &r_}) resize_buffer(*field, n);
   for (std::size_t k = 0; k < n; ++k) {
     px_[k] = circles[k][0];
     py_[k] = circles[k][1];
@@ -219,7 +216,7 @@ void BasicEngine<A>::rebuild() {
     reach = std::max(reach, p);
     radius = std::max(radius, r);
   }
-  std::uint64_t horizon = layout_.horizon(options_);
+  std::uint64_t horizon = layout_.horizon(options_, stats_.steps);
   // A naive test may call a pair touching slightly beyond the exact relation: its slack (impl/arithmetic.hpp)
   // widens every radius by `slack` for the list, on top of the skin.
   const double slack = A::slack * reach + A::slack * radius;
@@ -238,7 +235,7 @@ void BasicEngine<A>::rebuild() {
   overflow_free_ = reach + skin_for(horizon + 1, vmax, reach, A::drift) < kOverflowFreeReach;
   // Each radius widened by `widen` (outward, so at least r + widen exactly), or as it is for 0; per chunk.
   const auto widened = [&](std::vector<double>& to, double widen) {
-    to.resize(n);
+    resize_buffer(to, n);
     for_each_chunk(chunks, threads_, [&](std::size_t c) {
       for (std::size_t t = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1); t < e; ++t)
         to[t] = widen > 0 ? outward_upper(now_.r[t], widen) : now_.r[t];

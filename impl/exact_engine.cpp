@@ -528,7 +528,7 @@ void ExactEngine::rebuild(Columns<Int>& s) {
   // Velocities are only copied: the first world's bound holds for every later one.
   if (!(vmax_ >= 0)) vmax_ = speed_bound(s);
   const double vmax = vmax_;
-  std::uint64_t horizon = layout_.horizon(options_);
+  std::uint64_t horizon = layout_.horizon(options_, stats_.steps);
   double step = step_bound(horizon, vmax, 0, 0);
   double skin = skin_for(horizon, vmax, 0, 0);
   if (!(skin < kInfinity)) {

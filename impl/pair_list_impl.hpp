@@ -2,6 +2,7 @@
 // for_each_chunk's pragma needs the library's OpenMP flags.
 #pragma once
 
+#include "impl/buffers.hpp"
 #include "impl/contacts.hpp"
 #include "impl/pair_list.hpp"
 
@@ -32,6 +33,7 @@ inline void PairList::build(const CellGrid& grid, const CellView& view, unsigned
   // Which slots are in a pair: a pair's second slot may be another chunk's, so those marks are relaxed atomic
   // stores, all of the same value.
   std::vector<unsigned char>& listed = listed_;
+  reserve_buffer(listed, n);
   listed.assign(n, 0);
   // A listed pair counted in a tally (its tests over the horizon, its earliest first step) and its slots marked.
   using Tally = std::array<std::uint64_t, 2>;
@@ -66,7 +68,7 @@ inline void PairList::build(const CellGrid& grid, const CellView& view, unsigned
           const std::uint32_t step = first_of(a, b);
           if (step > horizon) continue;
           if (size == found.size()) [[unlikely]]
-            found.resize(std::max<std::size_t>(1024, 2 * size));
+            resize_buffer(found, std::max<std::size_t>(1024, 2 * size));
           const ListedPair p{static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b), step};
           found[size++] = p;
           ++count[bins + std::min(step, kBuckets - 1)];

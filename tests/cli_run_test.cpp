@@ -99,7 +99,7 @@ TEST(engines, each_steps_like_the_rounded_oracle) {
 
 TEST(engines, each_reports_an_overflow_with_its_step_circle_and_field_and_keeps_the_world) {
   for (const EngineEntry& e : engines::engines()) {
-    const auto stepper = e.start(kOverflowsAtStep4, 1);
+    const auto stepper = e.start(kOverflowsAtStep4, 1, 0);
     for (int t = 0; t < 3; ++t) stepper->step();
     const Circles w3 = stepper->circles();
     EXPECT_EQ(w3[1][0], DBL_MAX) << e.name;
@@ -247,7 +247,7 @@ TEST(run, writes_the_same_trace_bytes_as_append_line_on_one_thread_and_two) {
   const Circles world = random_world(3 * kPartCircles + 11, 0.5, 2, 0);
   const std::uint64_t steps = 3;
   std::string want;
-  const auto stepper = engine("double").start(world, 1);
+  const auto stepper = engine("double").start(world, 1, 0);
   want += format_line(kStep, 0, world) + "\n";
   for (std::uint64_t t = 1; t <= steps; ++t) {
     stepper->step();
@@ -582,7 +582,7 @@ class NoContacts final : public Stepper {
   Circles w_;
 };
 
-std::unique_ptr<Stepper> start_no_contacts(const Circles& w, unsigned threads) {
+std::unique_ptr<Stepper> start_no_contacts(const Circles& w, unsigned threads, std::uint64_t) {
   return std::make_unique<NoContacts>(w, threads);
 }
 const EngineEntry kNoContacts{"no-contacts", "", false, false, 256, &start_no_contacts};

@@ -216,14 +216,20 @@ TEST(pair_list, a_pair_whose_rounding_carries_it_half_an_ulp_further_every_step_
   }
 }
 
-TEST(pair_list, every_horizon_and_thread_count_gives_the_same_bits_on_a_busy_world) {
-  // 3000 circles at 10% coverage with contacts every step: fixed horizons from 0 to 64, the schedule's own,
-  // and lists for each step alone, on one and two threads, all equal after 40 steps.
+// 3000 circles at 10% coverage with contacts every step.
+Circles busy_world() {
   std::mt19937_64 g(3000);
   std::uniform_real_distribution<double> unit(0, 1);
   Circles w;
   for (int k = 0; k < 3000; ++k)
     w.push_back({600 * unit(g), 600 * unit(g), 200 * unit(g) - 100, 200 * unit(g) - 100, 2 + 4 * unit(g)});
+  return w;
+}
+
+TEST(pair_list, every_horizon_and_thread_count_gives_the_same_bits_on_a_busy_world) {
+  // Fixed horizons from 0 to 64, the schedule's own, and lists for each step alone, on one and two threads,
+  // all equal after 40 steps.
+  const Circles w = busy_world();
   DoubleEngine plain{World{w}, {.threads = 1, .keep_pairs = false}};
   for (int s = 0; s < 40; ++s) plain.step();
   const Circles want = plain.world().circles();
@@ -237,6 +243,36 @@ TEST(pair_list, every_horizon_and_thread_count_gives_the_same_bits_on_a_busy_wor
         EXPECT_LE(e.stats().rebuilds, 40 / (h + 1) + 1) << "H = " << h;
       }
     }
+}
+
+TEST(pair_list, a_run_of_known_length_lists_nothing_past_its_last_step_and_gives_the_same_bits) {
+  // EngineOptions::steps cuts every horizon to the run's end. A 1-step run lists only the pairs that touch in
+  // world 0 (horizon 0: every listed pair is tested in step 0), where the schedule's first horizon of 8 lists
+  // pairs that meet later; a 3-step run needs one list; every run ends in the bits of lists for each step.
+  const Circles w = busy_world();
+  DoubleEngine open{World{w}, {.threads = 1}};
+  open.step();
+  ASSERT_GT(open.stats().pairs_listed, open.stats().pairs_tested) << "the schedule's first list has no skin to cut";
+  for (const std::uint64_t steps : {1u, 3u, 12u}) {
+    DoubleEngine plain{World{w}, {.threads = 1, .keep_pairs = false}};
+    DoubleEngine planned{World{w}, {.threads = 2, .steps = steps}};
+    for (std::uint64_t s = 0; s < steps; ++s) {
+      plain.step();
+      planned.step();
+    }
+    EXPECT_EQ(planned.world().circles(), plain.world().circles()) << steps << " steps";
+    if (steps == 1) {
+      EXPECT_EQ(planned.stats().pairs_listed, planned.stats().pairs_tested);
+      EXPECT_LT(planned.stats().pairs_listed, open.stats().pairs_listed);
+    }
+    if (steps == 3) {  // one list, of horizon 2: the pairs a fixed horizon of 2 lists
+      DoubleEngine fixed{World{w}, {.threads = 1, .horizon = 2}};
+      fixed.step();
+      EXPECT_EQ(planned.stats().rebuilds, 1u);
+      EXPECT_EQ(planned.stats().pairs_listed, fixed.stats().pairs_listed);
+      EXPECT_LT(planned.stats().pairs_listed, open.stats().pairs_listed);
+    }
+  }
 }
 
 TEST(pair_list, the_schedule_grows_fourfold_far_below_balance_twofold_below_half_and_halves_above_twice) {
