@@ -46,6 +46,16 @@ def first_line(cmd, default="?"):
     return lines[0] if lines else default
 
 
+def cache_value(build, name):
+    """The value of `name` in the CMake cache of the build directory `build`, or None."""
+    try:
+        text = (pathlib.Path(build) / "CMakeCache.txt").read_text()
+    except OSError:
+        return None
+    m = re.search(rf"^{re.escape(name)}:[A-Z]+=(.*)$", text, re.M)
+    return m.group(1) if m else None
+
+
 def cpu_model(default="?"):
     """The CPU's model as lscpu names it (its first "Model name:" line), or `default`."""
     for line in output_lines(["lscpu"]):
