@@ -191,8 +191,8 @@ void CellOrder::Chunk::split(std::span<const CellKey> keys, std::span<const Cell
                              std::size_t end, std::span<const CellKey> splitters, std::size_t part) {
   for (std::vector<Entry>* list : {&same, &up, &down, &other, &foreign, &incoming}) list->clear();
   const bool guided = previous.size() == keys.size();
-  // Room for every slot in the list most of them go to: `same` when guided, else `other`.
-  reserve_buffer(guided ? same : other, end - begin);
+  // Unguided, every slot goes to `other`: room for all of them at once.
+  if (!guided) reserve_buffer(other, end - begin);
   // Part c holds the keys k with splitters[c] ≤ k < splitters[c + 1]; the first part has no lower bound and
   // the last no upper one.
   const std::size_t parts = splitters.size() - 1;
@@ -239,30 +239,33 @@ void CellOrder::Chunk::merge_into(std::span<std::uint32_t> out) {
   repair(down, spare);
   sort_slot_ordered(std::span<Entry>(other), spare);
   sort_slot_ordered(std::span<Entry>(incoming), spare);
-  if (same.empty() && up.empty() && down.empty() && incoming.empty()) {
-    // Everything in `other` (always so in the first layout, which has no previous keys to guide it): `other`
-    // is the order. It and the radix sort's scratch held every slot, and the guided sorts after the first
-    // layout fill `same` instead, so both are given back (at 10^7 circles, 320 MB).
-    for (std::size_t at = 0; at < other.size(); ++at) out[at] = other[at].slot;
-    std::vector<Entry>().swap(other);
-    std::vector<Entry>().swap(spare);
-    return;
-  }
-  // Merge the small lists first, then the large one once.
-  spare.resize(up.size() + down.size());
-  std::merge(up.begin(), up.end(), down.begin(), down.end(), spare.begin(), kBefore);
-  merged.resize(spare.size() + other.size());
-  std::merge(spare.begin(), spare.end(), other.begin(), other.end(), merged.begin(), kBefore);
-  if (!incoming.empty()) {
-    spare.resize(merged.size() + incoming.size());
-    std::merge(merged.begin(), merged.end(), incoming.begin(), incoming.end(), spare.begin(), kBefore);
+  // Every list but the longest merged into `merged` (together short: the longest holds most slots, `same` in
+  // a guided sort, `other` in the first layout or after the grid's plan changed), then that list and the
+  // longest straight into the order, so no list as long as the chunk is copied again. (key, slot) is a strict
+  // total order, so any order of merging gives the same result.
+  std::vector<Entry>* longest = &same;
+  for (std::vector<Entry>* list : {&up, &down, &other, &incoming})
+    if (list->size() > longest->size()) longest = list;
+  merged.clear();
+  for (std::vector<Entry>* list : {&same, &up, &down, &other, &incoming}) {
+    if (list == longest || list->empty()) continue;
+    spare.resize(merged.size() + list->size());
+    std::merge(merged.begin(), merged.end(), list->begin(), list->end(), spare.begin(), kBefore);
     merged.swap(spare);
   }
+  const std::vector<Entry>& rest = *longest;
   std::size_t a = 0, b = 0, at = 0;
-  while (a < same.size() && b < merged.size())
-    out[at++] = kBefore(merged[b], same[a]) ? merged[b++].slot : same[a++].slot;
-  while (a < same.size()) out[at++] = same[a++].slot;
+  while (a < rest.size() && b < merged.size())
+    out[at++] = kBefore(merged[b], rest[a]) ? merged[b++].slot : rest[a++].slot;
+  while (a < rest.size()) out[at++] = rest[a++].slot;
   while (b < merged.size()) out[at++] = merged[b++].slot;
+  // Memory that held a large share of the chunk in a list a guided sort keeps short (the first layout's
+  // `other` and its radix scratch: 320 MB at 10^7 circles) is given back, as is `same`'s when it held little
+  // (a sort after the grid's plan changed): the steps between rebuilds would otherwise carry it.
+  const std::size_t large = out.size() / 4;
+  for (std::vector<Entry>* list : {&up, &down, &other, &incoming, &merged, &spare})
+    if (list->capacity() > large) std::vector<Entry>().swap(*list);
+  if (same.capacity() > large && same.size() < large) std::vector<Entry>().swap(same);
 }
 
 bool CellOrder::sort(std::span<const CellKey> keys, std::span<const CellKey> previous,

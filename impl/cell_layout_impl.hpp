@@ -34,6 +34,7 @@ template <class... T>
 void CellLayout::arrange(unsigned threads, std::uint64_t horizon, const std::vector<double>& x,
                          const std::vector<double>& y, const std::vector<double>& inflated, Columns<T>... columns) {
   const std::size_t n = id_.size();
+  pairs_.release();  // rebuilt by list() after this; memory peaks during the sort below otherwise
   if (horizon != planned_horizon_) {
     grid_.plan(x, y, inflated);
     planned_horizon_ = horizon;
@@ -51,6 +52,10 @@ void CellLayout::arrange(unsigned threads, std::uint64_t horizon, const std::vec
     gather(threads, Columns<CellKey>{next_key_, {&key_}});
   }
   index_levels(key_, level_begin_, levels_);
+  // The sort's and the gathers' scratch (a quarter of the engine's memory at 10^7 circles) is given back
+  // before the list is built, where memory peaks, and taken again at the next rebuild.
+  for (std::vector<std::uint32_t>* scratch : {&permutation_, &scratch_id_}) std::vector<std::uint32_t>().swap(*scratch);
+  std::vector<CellKey>().swap(next_key_);
 }
 
 template <class T>
@@ -69,6 +74,9 @@ void CellLayout::gather(unsigned threads, const Columns<T>& set) {
     });
     column->swap(set.scratch);
   }
+  // Plain values are given back with the rest of arrange()'s scratch; values that own memory (GMP integers)
+  // stay, each with its allocation, for the next gather.
+  if constexpr (std::is_trivially_copyable_v<T>) std::vector<T>().swap(set.scratch);
 }
 
 }  // namespace circles::impl

@@ -14,6 +14,7 @@
 #include "impl/exact_engine.hpp"
 
 #include "impl/exact_bounds.hpp"
+#include "impl/buffers.hpp"
 #include "impl/cell_layout_impl.hpp"
 #include "impl/detail/exact_int.hpp"
 
@@ -543,12 +544,12 @@ void ExactEngine::rebuild(Columns<Int>& s) {
   const auto padding = [&](std::size_t t) {
     return error(std::max(std::fabs(a.x[t]), std::fabs(a.y[t])), layout_.id()[t]) * exact::kCentreSpread;
   };
-  inflated_.resize(n);
+  resize_buffer(inflated_, n);
   for (std::size_t t = 0; t < n; ++t) inflated_[t] = outward_upper(a.rho[t], padding(t) + skin);
   // The slots in cell order, every slot column gathered with them (the radii's integers stay by circle).
   layout_.arrange(threads_, horizon, a.x, a.y, inflated_, impl::Columns<Int>{s.spare, {&s.x, &s.y, &s.vx, &s.vy}},
                   impl::Columns<double>{scratch_, {&a.x, &a.y, &a.rho, &inflated_}});
-  padded_.resize(n);
+  resize_buffer(padded_, n);
   for (std::size_t t = 0; t < n; ++t) padded_[t] = outward_upper(a.rho[t], padding(t));
   // A pair disjoint at the inflated radii cannot meet within the horizon; one that intersects at the padded
   // radii may meet now; the rest from their gap (first_step), the padded radii bounding the exact gap below.

@@ -53,6 +53,11 @@ inline void PairList::build(const CellGrid& grid, const CellView& view, unsigned
     const std::size_t begin = chunk_begin(n, chunks, c), end = chunk_begin(n, chunks, c + 1);
     chunk.starts.assign((end - begin + kBlockSlots - 1) / kBlockSlots * kBuckets + 1, 0);
     std::uint32_t* const count = chunk.starts.data() + 1;
+    const std::size_t room = chunk.size + chunk.size / 8 + 1024;
+    if (found.size() < room) {
+      found.clear();  // nothing in it is kept: the build writes every pair again
+      resize_buffer(found, room);
+    }
     std::size_t size = 0;
     Tally mine{0, horizon + 1};  // a local, kept in registers, written to tally[c] at the end
     NeighbourCursor cursor;
@@ -68,7 +73,7 @@ inline void PairList::build(const CellGrid& grid, const CellView& view, unsigned
           const std::uint32_t step = first_of(a, b);
           if (step > horizon) continue;
           if (size == found.size()) [[unlikely]]
-            resize_buffer(found, std::max<std::size_t>(1024, 2 * size));
+            resize_buffer(found, size + size / 2);
           const ListedPair p{static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b), step};
           found[size++] = p;
           ++count[bins + std::min(step, kBuckets - 1)];
