@@ -30,7 +30,7 @@ constexpr double kOverflowFreeReach = 0x1p1023;
 
 // ── World ─────────────────────────────────────────────────────────────────────────────────────────────
 
-World::World(const std::vector<std::array<double, 5>>& circles) {
+World::World(const spec::Circles& circles) {
   const std::size_t n = circles.size();
   if (n > std::numeric_limits<std::uint32_t>::max())
     throw std::length_error("World: " + std::to_string(n) + " circles; at most 2^32 - 1");
@@ -45,8 +45,8 @@ World::World(const std::vector<std::array<double, 5>>& circles) {
   }
 }
 
-std::vector<std::array<double, 5>> World::circles() const {
-  std::vector<std::array<double, 5>> out(size());
+spec::Circles World::circles() const {
+  spec::Circles out(size());
   for (std::size_t k = 0; k < size(); ++k) out[k] = {px_[k], py_[k], vx_[k], vy_[k], r_[k]};
   return out;
 }
@@ -111,7 +111,7 @@ std::vector<std::uint32_t> BasicEngine<A>::slots() const {
 
 template <class A>
 void BasicEngine<A>::read_circles(std::span<const std::uint32_t> slots, std::size_t first,
-                                  std::span<std::array<double, 5>> out) const {
+                                  std::span<spec::CircleDoubles> out) const {
   for (std::size_t i = 0; i < out.size(); ++i) {
     const std::uint32_t t = slots[first + i];
     out[i] = {now_.px[t], now_.py[t], now_.vx[t], now_.vy[t], now_.r[t]};

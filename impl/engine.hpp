@@ -20,7 +20,6 @@
 #include "impl/cell_layout.hpp"
 #include "spec/outside_c.hpp"
 
-#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -40,10 +39,10 @@ class World {
   World() = default;
   // From [px, py, vx, vy, r] per circle. Throws spec::OutsideC for the first circle outside C of the resolved
   // profile, with the oracle's own check (spec::check_doubles), and std::length_error for 2^32 circles or more.
-  explicit World(const std::vector<std::array<double, 5>>& circles);
+  explicit World(const spec::Circles& circles);
 
   // Back to [px, py, vx, vy, r] per circle, the same doubles bit for bit.
-  std::vector<std::array<double, 5>> circles() const;
+  spec::Circles circles() const;
 
   std::size_t size() const noexcept { return px_.size(); }
   std::span<const double> px() const noexcept { return px_; }
@@ -95,7 +94,7 @@ class BasicEngine {
   // It only reads, so threads may call it at once on any slices.
   std::vector<std::uint32_t> slots() const;
   void read_circles(std::span<const std::uint32_t> slots, std::size_t first,
-                    std::span<std::array<double, 5>> out) const;
+                    std::span<spec::CircleDoubles> out) const;
   // Steps taken since construction.
   std::uint64_t steps() const noexcept { return stats_.steps; }
   // Steps whose list was empty: no pair was tested, every circle only moved.

@@ -583,7 +583,7 @@ std::vector<CandidatePair> ExactEngine::candidates() const {
 }
 
 World ExactEngine::world() const {
-  std::vector<std::array<double, 5>> out(size());
+  spec::Circles out(size());
   std::visit(
       [&](const auto& s) {
         using Int = typename std::decay_t<decltype(s.x)>::value_type;

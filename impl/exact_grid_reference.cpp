@@ -32,7 +32,7 @@ namespace {
 
 using exact::raw;
 using exact::Wide;
-using Circles = std::vector<std::array<double, 5>>;
+using spec::Circles;
 
 }  // namespace
 
