@@ -41,7 +41,7 @@ const std::string kLeastContact = "the least-contact rule e (8) (docs/math.md#8-
 // touches it.
 std::string decision(const Circles& in, std::size_t k, int field, const Circles& expected, const Circles& actual) {
   if (field == 4) return "none: the position and velocity are right, but the radius changed, which no step does";
-  const auto same_velocity = [](const std::array<double, 5>& a, const std::array<double, 5>& b) {
+  const auto same_velocity = [](const spec::CircleDoubles& a, const spec::CircleDoubles& b) {
     return a[2] == b[2] && a[3] == b[3];
   };
   if (same_velocity(expected[k], actual[k])) return "none: the velocity is right, the position is not the nearest double";
