@@ -17,7 +17,7 @@ namespace {
 using conform::Counterexample;
 using conform::Outcome;
 using conform::Verdict;
-using formats::Circles;
+using spec::Circles;
 using properties::Profile;
 namespace json_number = formats::json_number;
 

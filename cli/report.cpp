@@ -21,7 +21,7 @@ using conform::Counterexample;
 using conform::FamilyResult;
 using conform::FamilyStatus;
 using conform::Verdict;
-using formats::Circles;
+using spec::Circles;
 using formats::json_string;
 namespace json_number = formats::json_number;
 

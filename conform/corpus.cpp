@@ -77,7 +77,7 @@ class Reader {
       const nlohmann::json& c = x[k];
       const std::string circle = where + ": circle " + std::to_string(k);
       if (!c.is_array() || c.size() != 5) fail(circle + ": expected 5 numbers [px, py, vx, vy, r]");
-      std::array<double, 5> fields{};
+      spec::CircleDoubles fields{};
       for (std::size_t f = 0; f < 5; ++f)
         fields[f] = number(c[f], circle + ", field " + properties::field_name(static_cast<int>(f)), numbers);
       try {

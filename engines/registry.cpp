@@ -23,7 +23,7 @@ void Stepper::step() {
 
 formats::CircleSource Stepper::source() const {
   auto held = std::make_shared<const Circles>(circles());
-  return [held, whole = formats::source_of(*held)](std::size_t first, std::span<std::array<double, 5>> out) {
+  return [held, whole = formats::source_of(*held)](std::size_t first, std::span<spec::CircleDoubles> out) {
     whole(first, out);
   };
 }
@@ -40,7 +40,7 @@ class ImplStepper final : public Stepper {
   formats::CircleSource source() const override {
     if constexpr (requires { engine_.slots(); }) {
       auto slots = std::make_shared<const std::vector<std::uint32_t>>(engine_.slots());
-      return [this, slots](std::size_t first, std::span<std::array<double, 5>> out) {
+      return [this, slots](std::size_t first, std::span<spec::CircleDoubles> out) {
         engine_.read_circles(*slots, first, out);
       };
     } else {

@@ -26,7 +26,7 @@
 
 namespace circles::engines {
 
-using formats::Circles;
+using spec::Circles;
 
 // A step whose next position is beyond the double range: circle `index`, coordinate `field` (px or py) of the
 // world the step would produce, w_step. what(): "step 31, circle 2, field px: the position p + v/60
