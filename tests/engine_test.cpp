@@ -39,7 +39,7 @@
 namespace circles::impl {
 namespace {
 
-using Circles = std::vector<std::array<double, 5>>;
+using spec::Circles;
 using circles::testing::thrown;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -176,8 +176,8 @@ TEST(engine, takes_the_velocity_of_the_lexicographically_least_contact_with_ties
   Check check("ties");
   for (std::size_t j = 0; j <= 5; ++j) {
     for (const double zero : {0.0, -0.0}) {
-      std::array<double, 5> a{1, 1, 2, 3, 1};
-      std::array<double, 5> b = a;
+      spec::CircleDoubles a{1, 1, 2, 3, 1};
+      spec::CircleDoubles b = a;
       if (j < 5) b[j] += 0.5;
       for (std::size_t f = 0; f < j && f < 4; ++f) {
         a[f] = f % 2 ? zero : -zero;
@@ -192,7 +192,7 @@ TEST(engine, takes_the_velocity_of_the_lexicographically_least_contact_with_ties
 
 TEST(engine, agrees_with_the_rounded_oracle_on_exact_duplicates) {
   Check check("duplicates");
-  const std::array<double, 5> c{1, 2, 3, 4, 5};
+  const spec::CircleDoubles c{1, 2, 3, 4, 5};
   check.world({c, c});
   check.world({c, c, c, {1, 2, 3, 5, 5}, {1, 2, 2, 4, 5}});
   check.world({{0, 0, 0, 0, 0}, {0, 0, 0, 0, 0}, {0, 0, 1, 1, 0}});

@@ -30,7 +30,7 @@
 namespace circles::impl {
 namespace {
 
-using Circles = std::vector<std::array<double, 5>>;
+using spec::Circles;
 using circles::testing::thrown;
 using spec::Q;
 using circles::testing::exact_of;

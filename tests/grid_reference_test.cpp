@@ -22,7 +22,7 @@
 namespace circles::impl {
 namespace {
 
-using Circles = std::vector<std::array<double, 5>>;
+using spec::Circles;
 using circles::testing::thrown;
 
 // step_grid(w) and step_all_pairs(w) give the same bits, or both throw PositionOverflow for the same circle and
