@@ -38,7 +38,7 @@ class Reference {
       exact_->step();
       return exact_->rounded();
     } catch (const impl::PositionOverflow& e) {
-      overflow = engines::overflow_reason(e.index, std::string_view(e.field) == "px" ? spec::Field::px : spec::Field::py);
+      overflow = impl::overflow_reason(e.index, e.field);
       return std::nullopt;
     }
   }
@@ -114,10 +114,10 @@ Comparison compare_with_oracle(const engines::EngineEntry& engine, const Circles
         c.overflow = expected;
       } else {
         c.difference = "step " + std::to_string(step) + ": " +
-                       (expected ? "the oracle stops at " + engines::overflow_reason(expected->index, expected->field)
+                       (expected ? "the oracle stops at " + impl::overflow_reason(expected->index, expected->field)
                                  : std::string("the oracle does not overflow")) +
                        ", the engine " +
-                       (actual ? "stops at " + engines::overflow_reason(actual->index, actual->field) : "does not");
+                       (actual ? "stops at " + impl::overflow_reason(actual->index, actual->field) : "does not");
       }
       return c;
     }

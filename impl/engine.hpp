@@ -25,7 +25,6 @@
 #include <span>
 #include <stdexcept>
 #include <string>
-#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -63,18 +62,19 @@ class World {
 };
 
 // A step whose position overflows: at step `step` (the step that would make world `step` from world
-// `step` − 1), circle `index`'s coordinate `field` ("px" or "py") would become ±infinity. The world is left
+// `step` − 1), circle `index`'s coordinate `field` (px or py) would become ±infinity. The world is left
 // as it was before that step.
 // "circle <index>, field <field>: the position p + v/60 overflows to infinity": the reason every overflow of a
-// position is reported with, by the engines and by `circles conform`'s steppers.
-std::string overflow_reason(std::size_t index, std::string_view field);
+// position is reported with: by the engines here, and by the registry's steppers, `circles serve` and
+// `circles check-trace`.
+std::string overflow_reason(std::size_t index, spec::Field field);
 
 class PositionOverflow : public std::overflow_error {
  public:
-  PositionOverflow(std::uint64_t step, std::size_t index, const char* field);
+  PositionOverflow(std::uint64_t step, std::size_t index, spec::Field field);
   std::uint64_t step;
   std::size_t index;
-  const char* field;
+  spec::Field field;
 };
 
 // The engine: circles kept in cell order (impl/broad_phase.hpp), a list of the pairs that can meet before

@@ -386,7 +386,7 @@ void ExactEngine::take_velocities(Columns<Int>& s) {
     }
     if (first != kNone) {
       untouch();
-      throw PositionOverflow(stats_.steps + 1, first / 2, first % 2 ? "py" : "px");
+      throw PositionOverflow(stats_.steps + 1, first / 2, first % 2 ? spec::Field::py : spec::Field::px);
     }
   }
   // Every new velocity first, read from world t (a slot's least contact may be touched too), then written;
