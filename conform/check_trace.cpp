@@ -130,7 +130,7 @@ Comparison compare_with_oracle(const engines::EngineEntry& engine, const Circles
     if (!chain.judge(std::move(got), std::move(want))) {
       const properties::Difference& d = chain.failure()->difference;
       c.difference = "step " + std::to_string(step) + ", circle " + std::to_string(d.circle) + ", field " +
-                     spec::name(spec::Field(d.field)) + ": oracle " + formats::json_number::decimal_and_hex(d.expected) +
+                     spec::name(d.field) + ": oracle " + formats::json_number::decimal_and_hex(d.expected) +
                      ", engine " + formats::json_number::decimal_and_hex(d.actual);
       return c;
     }
