@@ -160,7 +160,7 @@ Comparison exact_engine_against_swept_steps(const spec::Sequence& w0, std::uint6
 }
 
 // The scene's circles at their exact values.
-spec::Sequence rationals_of(const Doubles& circles) { return spec::from_doubles(circles, spec::Radii::non_negative); }
+spec::Sequence rationals_of(const Circles& circles) { return spec::from_doubles(circles, spec::Radii::non_negative); }
 
 int figures(const std::filesystem::path& dir, const std::filesystem::path& csv, const std::string& contacts_csv,
             const std::string& exactness_csv, std::uint64_t exactness_steps, int repetitions,

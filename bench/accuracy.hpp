@@ -18,7 +18,6 @@
 #include "impl/engine.hpp"
 #include "spec/oracle.hpp"
 
-#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -31,7 +30,7 @@
 
 namespace circles::bench::accuracy {
 
-using Doubles = std::vector<std::array<double, 5>>;
+using spec::Circles;
 // decisions[k]: the circle that circle k takes its velocity from at the next step; k itself when none.
 using Decisions = std::vector<std::uint32_t>;
 
@@ -71,10 +70,10 @@ class Variant {
 
 // The variant on `scene` (exact doubles). float_naive first rounds every field to float; a field beyond the
 // float range becomes ±infinity and impl::World refuses it with spec::OutsideC, which this passes on.
-std::unique_ptr<Variant> make_variant(Kind kind, const Doubles& scene);
+std::unique_ptr<Variant> make_variant(Kind kind, const Circles& scene);
 
 // How many fields of `scene` change when rounded to float (what float_naive starts from instead).
-std::size_t float_changes(const Doubles& scene);
+std::size_t float_changes(const Circles& scene);
 
 // The exact run's decisions on a world of rationals: candidate pairs from boxes that contain the exact ones,
 // then spec::intersect, the least by spec::lex_compare and then by index.
@@ -128,12 +127,12 @@ struct Outcome {
 // themselves to show what they do there (throw, or go on, with or without a NaN or infinity). Throws
 // std::logic_error if a variant's velocities after a step are not those its decisions() predicted, or if
 // the exact or oracle variant ever differs from the exact run: the report relies on both.
-std::vector<Outcome> follow(const Doubles& scene, std::uint64_t steps, std::span<const Kind> kinds,
+std::vector<Outcome> follow(const Circles& scene, std::uint64_t steps, std::span<const Kind> kinds,
                             std::uint64_t oracle_steps);
 
 // Median wall-clock nanoseconds per circle-step of `repetitions` runs of `steps` steps from a fresh variant
 // (construction untimed). Returns nothing when the variant cannot take the scene or throws on the way.
-std::optional<double> ns_per_circle_step(Kind kind, const Doubles& scene, std::uint64_t steps, int repetitions);
+std::optional<double> ns_per_circle_step(Kind kind, const Circles& scene, std::uint64_t steps, int repetitions);
 
 // ── Scenes ───────────────────────────────────────────────────────────────────────────────────────────
 
@@ -150,7 +149,7 @@ struct Scene {
   std::string id;    // file name without .json for the bundled ones
   std::string name;  // the scene's "name"
   std::uint64_t steps = 0;
-  Doubles circles;
+  Circles circles;
   std::vector<std::string> circle_names;  // empty, or one per circle ("" for none)
   std::vector<Designed> designed;
 };

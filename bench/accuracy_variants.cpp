@@ -25,7 +25,7 @@ constexpr impl::EngineOptions kOneThread{.threads = 1};
 template <class A>
 class EngineVariant final : public Variant {
  public:
-  explicit EngineVariant(const Doubles& scene) : engine_(impl::World(scene), kOneThread) {}
+  explicit EngineVariant(const Circles& scene) : engine_(impl::World(scene), kOneThread) {}
 
   void step() override { engine_.step(); }
 
@@ -53,8 +53,8 @@ class EngineVariant final : public Variant {
 };
 
 // Every field rounded to float, held as the double of that float (exact).
-Doubles to_float(const Doubles& scene) {
-  Doubles out = scene;
+Circles to_float(const Circles& scene) {
+  Circles out = scene;
   for (auto& circle : out)
     for (double& x : circle) x = static_cast<double>(static_cast<float>(x));
   return out;
@@ -62,7 +62,7 @@ Doubles to_float(const Doubles& scene) {
 
 class ExactVariant final : public Variant {
  public:
-  explicit ExactVariant(const Doubles& scene) : engine_(impl::World(scene), kOneThread) {}
+  explicit ExactVariant(const Circles& scene) : engine_(impl::World(scene), kOneThread) {}
   void step() override { engine_.step(); }
   Decisions decisions() const override { return exact_decisions(engine_.exact()); }
   std::variant<impl::World, spec::Sequence> state() const override { return engine_.exact(); }
@@ -73,7 +73,7 @@ class ExactVariant final : public Variant {
 
 class OracleVariant final : public Variant {
  public:
-  explicit OracleVariant(const Doubles& scene) : w_(spec::from_doubles(scene, spec::Radii::non_negative)) {}
+  explicit OracleVariant(const Circles& scene) : w_(spec::from_doubles(scene, spec::Radii::non_negative)) {}
   void step() override { w_ = spec::resolved_step(w_); }
   Decisions decisions() const override { return exact_decisions(w_); }
   std::variant<impl::World, spec::Sequence> state() const override { return w_; }
@@ -146,7 +146,7 @@ Kind kind_of(std::string_view id) {
   throw std::invalid_argument("no variant named " + std::string(id));
 }
 
-std::unique_ptr<Variant> make_variant(Kind kind, const Doubles& scene) {
+std::unique_ptr<Variant> make_variant(Kind kind, const Circles& scene) {
   switch (kind) {
     case Kind::float_naive: return std::make_unique<EngineVariant<impl::FloatNaiveArithmetic>>(to_float(scene));
     case Kind::naive_sqrt: return std::make_unique<EngineVariant<impl::NaiveSqrtArithmetic>>(scene);
@@ -159,7 +159,7 @@ std::unique_ptr<Variant> make_variant(Kind kind, const Doubles& scene) {
   throw std::invalid_argument("make_variant: unknown kind");
 }
 
-std::size_t float_changes(const Doubles& scene) {
+std::size_t float_changes(const Circles& scene) {
   std::size_t changed = 0;
   for (const auto& circle : scene)
     for (const double x : circle) changed += static_cast<double>(static_cast<float>(x)) != x;
@@ -272,7 +272,7 @@ std::string Departure::describe() const {
          circle_or_none(exact_took, circle);
 }
 
-std::vector<Outcome> follow(const Doubles& scene, std::uint64_t steps, std::span<const Kind> kinds,
+std::vector<Outcome> follow(const Circles& scene, std::uint64_t steps, std::span<const Kind> kinds,
                             std::uint64_t oracle_steps) {
   struct Run {
     Outcome out;
@@ -391,7 +391,7 @@ std::vector<Outcome> follow(const Doubles& scene, std::uint64_t steps, std::span
   return out;
 }
 
-std::optional<double> ns_per_circle_step(Kind kind, const Doubles& scene, std::uint64_t steps, int repetitions) {
+std::optional<double> ns_per_circle_step(Kind kind, const Circles& scene, std::uint64_t steps, int repetitions) {
   if (scene.empty() || steps == 0) return std::nullopt;
   std::vector<double> times;
   for (int r = 0; r < repetitions; ++r) {

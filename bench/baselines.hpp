@@ -7,14 +7,15 @@
 // in the last bits of positions.
 #pragma once
 
-#include <array>
+#include "spec/outside_c.hpp"
+
 #include <cstddef>
 #include <cstdint>
 #include <vector>
 
 namespace circles::bench {
 
-using Circles = std::vector<std::array<double, 5>>;
+using spec::Circles;
 
 // A world as five arrays, with each slot's circle index (its identity for the order's tie-break).
 struct Arrays {

@@ -35,7 +35,7 @@ std::size_t steps_for(std::size_t n) { return n < 100'000 ? kStepsPerStepper : 5
 
 class Box2DScene {
  public:
-  explicit Box2DScene(const std::vector<std::array<double, 5>>& circles) : world_(b2Vec2(0, 0)) {
+  explicit Box2DScene(const spec::Circles& circles) : world_(b2Vec2(0, 0)) {
     for (const auto& c : circles) {
       b2BodyDef body;
       body.type = b2_dynamicBody;

@@ -64,7 +64,7 @@
 namespace circles::bench {
 namespace {
 
-using formats::Circles;
+using spec::Circles;
 using properties::Profile;
 
 constexpr std::uint64_t kSeed = 1;

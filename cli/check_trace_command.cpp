@@ -30,7 +30,7 @@ void print_check(const TraceCheck& check, const std::string& source, TraceRefere
       << (exact ? ", rounded" : "") << ": ";
   if (d.difference) {
     const Difference& f = *d.difference;
-    out << "circle " << f.circle << ", field " << spec::name(spec::Field(f.field)) << ": expected "
+    out << "circle " << f.circle << ", field " << spec::name(f.field) << ": expected "
         << json_number::decimal_and_hex(f.expected) << ", actual " << json_number::decimal_and_hex(f.actual) << "\n";
     // The decision is judged on the world of the line before, which is the reference's input only for double.
     if (!exact) out << "  which decision: " << f.decision << "\n";

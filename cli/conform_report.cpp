@@ -17,7 +17,7 @@ namespace {
 using conform::Counterexample;
 using conform::Outcome;
 using conform::Verdict;
-using formats::Circles;
+using spec::Circles;
 using properties::Profile;
 namespace json_number = formats::json_number;
 
@@ -58,7 +58,7 @@ std::string found(const Verdict& v, const Counterexample& c) {
 std::string difference_line(const Counterexample& c) {
   const properties::Difference& d = c.difference;
   return "step " + std::to_string(c.step) + " of " + std::to_string(c.steps) + ", circle " + std::to_string(d.circle) +
-         ", field " + properties::field_name(d.field) + ": expected " + json_number::decimal_and_hex(d.expected) +
+         ", field " + spec::name(d.field) + ": expected " + json_number::decimal_and_hex(d.expected) +
          ", got " + json_number::decimal_and_hex(d.actual);
 }
 

@@ -21,7 +21,7 @@ using conform::Counterexample;
 using conform::FamilyResult;
 using conform::FamilyStatus;
 using conform::Verdict;
-using formats::Circles;
+using spec::Circles;
 using formats::json_string;
 namespace json_number = formats::json_number;
 
@@ -45,7 +45,7 @@ std::string counterexample_json(const Counterexample& c, const std::string& text
   out += ",\n    \"received\": ";
   append_world(out, c.actual);
   out += ",\n    \"difference\": {\"circle\": " + std::to_string(d.circle) + ", \"field\": " +
-         json_string(properties::field_name(d.field)) + ", \"expected\": ";
+         json_string(spec::name(d.field)) + ", \"expected\": ";
   json_number::append_or_string(out, d.expected);
   out += ", \"received\": ";
   json_number::append_or_string(out, d.actual);
@@ -62,7 +62,7 @@ std::string counterexample_json(const Counterexample& c, const std::string& text
 std::string difference_message(const Counterexample& c) {
   const properties::Difference& d = c.difference;
   return "step " + std::to_string(c.step) + " of " + std::to_string(c.steps) + ", circle " + std::to_string(d.circle) +
-         ", field " + properties::field_name(d.field) + ": expected " + json_number::decimal_and_hex(d.expected) +
+         ", field " + spec::name(d.field) + ": expected " + json_number::decimal_and_hex(d.expected) +
          ", got " + json_number::decimal_and_hex(d.actual);
 }
 

@@ -27,7 +27,7 @@
 
 namespace circles::conform {
 
-using formats::Circles;
+using spec::Circles;
 using formats::ProtocolError;
 using formats::Line;
 using formats::Reading;

@@ -38,7 +38,7 @@ class Reference {
       exact_->step();
       return exact_->rounded();
     } catch (const impl::PositionOverflow& e) {
-      overflow = engines::overflow_reason(e.index, std::string_view(e.field) == "px" ? spec::Field::px : spec::Field::py);
+      overflow = impl::overflow_reason(e.index, e.field);
       return std::nullopt;
     }
   }
@@ -114,10 +114,10 @@ Comparison compare_with_oracle(const engines::EngineEntry& engine, const Circles
         c.overflow = expected;
       } else {
         c.difference = "step " + std::to_string(step) + ": " +
-                       (expected ? "the oracle stops at " + engines::overflow_reason(expected->index, expected->field)
+                       (expected ? "the oracle stops at " + impl::overflow_reason(expected->index, expected->field)
                                  : std::string("the oracle does not overflow")) +
                        ", the engine " +
-                       (actual ? "stops at " + engines::overflow_reason(actual->index, actual->field) : "does not");
+                       (actual ? "stops at " + impl::overflow_reason(actual->index, actual->field) : "does not");
       }
       return c;
     }
@@ -130,7 +130,7 @@ Comparison compare_with_oracle(const engines::EngineEntry& engine, const Circles
     if (!chain.judge(std::move(got), std::move(want))) {
       const properties::Difference& d = chain.failure()->difference;
       c.difference = "step " + std::to_string(step) + ", circle " + std::to_string(d.circle) + ", field " +
-                     spec::name(spec::Field(d.field)) + ": oracle " + formats::json_number::decimal_and_hex(d.expected) +
+                     spec::name(d.field) + ": oracle " + formats::json_number::decimal_and_hex(d.expected) +
                      ", engine " + formats::json_number::decimal_and_hex(d.actual);
       return c;
     }

@@ -29,7 +29,7 @@
 
 namespace circles::conform {
 
-using formats::Circles;
+using spec::Circles;
 using formats::Line;
 using formats::TraceReader;
 using formats::TraceReadError;

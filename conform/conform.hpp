@@ -36,7 +36,7 @@
 
 namespace circles::conform {
 
-using formats::Circles;
+using spec::Circles;
 using properties::compare;
 using properties::Difference;
 using properties::Level;

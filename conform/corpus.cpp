@@ -77,9 +77,9 @@ class Reader {
       const nlohmann::json& c = x[k];
       const std::string circle = where + ": circle " + std::to_string(k);
       if (!c.is_array() || c.size() != 5) fail(circle + ": expected 5 numbers [px, py, vx, vy, r]");
-      std::array<double, 5> fields{};
+      spec::CircleDoubles fields{};
       for (std::size_t f = 0; f < 5; ++f)
-        fields[f] = number(c[f], circle + ", field " + properties::field_name(static_cast<int>(f)), numbers);
+        fields[f] = number(c[f], circle + ", field " + spec::name(spec::Field(f)), numbers);
       try {
         if (numbers == Numbers::finite) spec::check_doubles(fields, k, spec::Radii::non_negative);
       } catch (const spec::OutsideC& e) {
@@ -123,7 +123,7 @@ std::string to_json(const StoredCounterexample& c) {
   if (c.difference) {
     const properties::Difference& d = *c.difference;
     out += "  \"difference\": {\"circle\": " + std::to_string(d.circle) + ", \"field\": " +
-           string(properties::field_name(d.field)) + ", \"expected\": " + number(d.expected) +
+           string(spec::name(d.field)) + ", \"expected\": " + number(d.expected) +
            ", \"actual\": " + answered(d.actual) + ",\n                 \"decision\": " + string(d.decision) + "},\n";
   }
   if (!c.expected.empty()) {
@@ -186,10 +186,11 @@ StoredCounterexample from_json(std::string_view text, const std::string& source)
     properties::Difference diff{};
     diff.circle = read.integer(d["circle"], "circle");
     const std::string field = read.string(d["field"], "field");
-    diff.field = -1;
-    for (int f = 0; f < 5; ++f)
-      if (field == properties::field_name(f)) diff.field = f;
-    if (diff.field < 0) read.fail("key \"difference\": field " + d["field"].dump() + " is not px, py, vx, vy or r");
+    std::optional<spec::Field> named;
+    for (std::size_t f = 0; f < 5; ++f)
+      if (field == spec::name(spec::Field(f))) named = spec::Field(f);
+    if (!named) read.fail("key \"difference\": field " + d["field"].dump() + " is not px, py, vx, vy or r");
+    diff.field = *named;
     diff.expected = read.number(d["expected"], "key \"difference\": expected");
     diff.actual = read.number(d["actual"], "key \"difference\": actual", Numbers::any);
     diff.decision = read.string(d["decision"], "decision");

@@ -27,7 +27,7 @@
 
 namespace circles::conform {
 
-using formats::Circles;
+using spec::Circles;
 using formats::format_line;
 using formats::in_quotes;
 using formats::kId;

@@ -141,7 +141,7 @@ std::string expectations_text(const Verdict& verdict) {
     if (f.status != FamilyStatus::failed && f.status != FamilyStatus::expected_failure) continue;
     if (f.counterexample) {
       const properties::Difference& d = f.counterexample->difference;
-      text += "# field " + std::string(properties::field_name(d.field)) + " of circle " + std::to_string(d.circle) +
+      text += "# field " + std::string(spec::name(d.field)) + " of circle " + std::to_string(d.circle) +
               ": expected " + formats::json_number::decimal_and_hex(d.expected) + ", got " +
               formats::json_number::decimal_and_hex(d.actual) + " (" + d.decision + "); replay: " +
               f.counterexample->replay + "\n";

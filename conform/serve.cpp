@@ -1,6 +1,7 @@
 #include "conform/serve.hpp"
 
 #include "formats/protocol.hpp"
+#include "impl/engine.hpp"  // impl::overflow_reason
 
 #include <istream>
 #include <ostream>
@@ -8,7 +9,7 @@
 namespace circles::conform {
 
 RequestOverflow::RequestOverflow(std::size_t l, std::uint64_t i, std::size_t k, spec::Field f)
-    : std::overflow_error("line " + std::to_string(l) + " (id " + std::to_string(i) + "): " + engines::overflow_reason(k, f)),
+    : std::overflow_error("line " + std::to_string(l) + " (id " + std::to_string(i) + "): " + impl::overflow_reason(k, f)),
       line(l),
       id(i),
       index(k),

@@ -20,7 +20,7 @@
 
 namespace circles::conform {
 
-using formats::Circles;
+using spec::Circles;
 using formats::Vector;
 
 // The vectors cannot be made or written: what() names the file or directory and the reason.

@@ -12,9 +12,10 @@
 namespace circles::engines {
 
 StepOverflow::StepOverflow(std::uint64_t s, std::size_t i, spec::Field f)
-    : std::overflow_error("step " + std::to_string(s) + ", " + overflow_reason(i, f)), step(s), index(i), field(f) {}
-
-std::string overflow_reason(std::size_t index, spec::Field field) { return impl::overflow_reason(index, spec::name(field)); }
+    : std::overflow_error("step " + std::to_string(s) + ", " + impl::overflow_reason(i, f)),
+      step(s),
+      index(i),
+      field(f) {}
 
 void Stepper::step() {
   if (const auto overflow = advance()) throw StepOverflow(steps_ + 1, overflow->index, overflow->field);
@@ -23,7 +24,7 @@ void Stepper::step() {
 
 formats::CircleSource Stepper::source() const {
   auto held = std::make_shared<const Circles>(circles());
-  return [held, whole = formats::source_of(*held)](std::size_t first, std::span<std::array<double, 5>> out) {
+  return [held, whole = formats::source_of(*held)](std::size_t first, std::span<spec::CircleDoubles> out) {
     whole(first, out);
   };
 }
@@ -40,7 +41,7 @@ class ImplStepper final : public Stepper {
   formats::CircleSource source() const override {
     if constexpr (requires { engine_.slots(); }) {
       auto slots = std::make_shared<const std::vector<std::uint32_t>>(engine_.slots());
-      return [this, slots](std::size_t first, std::span<std::array<double, 5>> out) {
+      return [this, slots](std::size_t first, std::span<spec::CircleDoubles> out) {
         engine_.read_circles(*slots, first, out);
       };
     } else {
@@ -61,7 +62,7 @@ class ImplStepper final : public Stepper {
     try {
       engine_.step();
     } catch (const impl::PositionOverflow& e) {
-      return Overflow{e.index, std::string_view(e.field) == "px" ? spec::Field::px : spec::Field::py};
+      return Overflow{e.index, e.field};
     }
     return std::nullopt;
   }

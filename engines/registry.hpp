@@ -26,11 +26,11 @@
 
 namespace circles::engines {
 
-using formats::Circles;
+using spec::Circles;
 
 // A step whose next position is beyond the double range: circle `index`, coordinate `field` (px or py) of the
-// world the step would produce, w_step. what(): "step 31, circle 2, field px: the position p + v/60
-// overflows to infinity".
+// world the step would produce, w_step. what(): "step 31, " and then impl::overflow_reason, "circle 2, field
+// px: the position p + v/60 overflows to infinity".
 class StepOverflow : public std::overflow_error {
  public:
   StepOverflow(std::uint64_t step, std::size_t index, spec::Field field);
@@ -38,9 +38,6 @@ class StepOverflow : public std::overflow_error {
   std::size_t index;
   spec::Field field;
 };
-
-// "circle 2, field px: the position p + v/60 overflows to infinity": what() without the step.
-std::string overflow_reason(std::size_t index, spec::Field field);
 
 // A world being stepped by one engine.
 class Stepper {

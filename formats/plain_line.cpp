@@ -59,7 +59,7 @@ bool read_circles(ondemand::array array, Circles& circles) {
   for (auto element : array) {
     ondemand::array fields;
     if (element.get_array().get(fields)) return false;
-    std::array<double, kFields> circle{};
+    spec::CircleDoubles circle{};
     std::size_t j = 0;
     for (auto field : fields) {
       ondemand::value v;

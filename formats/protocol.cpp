@@ -304,7 +304,7 @@ class Reader {
   std::size_t depth_ = 0;
   State state_ = State::top;
   bool seen_counter_ = false, seen_circles_ = false;
-  std::array<double, kFields> fields_{};
+  spec::CircleDoubles fields_{};
   std::size_t field_ = 0;
 };
 

@@ -6,18 +6,18 @@
 // and written by the rules of formats/json_number.hpp.
 #pragma once
 
-#include <array>
+#include "spec/outside_c.hpp"
+
 #include <cstddef>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <string_view>
-#include <vector>
 
 namespace circles::formats {
 
-// A world as the protocol carries it: [px, py, vx, vy, r] per circle.
-using Circles = std::vector<std::array<double, 5>>;
+// A world as the protocol carries it (spec::Circles): [px, py, vx, vy, r] per circle.
+using spec::Circles;
 inline constexpr std::size_t kFields = std::tuple_size_v<Circles::value_type>;  // px, py, vx, vy, r
 
 // A line that is not a protocol line. what() is "line L: reason", the reason naming the key or the circle and

@@ -193,7 +193,7 @@ std::string string_of(const nlohmann::json& x, const std::string& where) {
 }
 
 // [px, py] or [vx, vy] of a circle object into fields[first], fields[first + 1].
-void pair_of(const nlohmann::json& x, const std::string& where, const char* shape, std::array<double, 5>& fields,
+void pair_of(const nlohmann::json& x, const std::string& where, const char* shape, spec::CircleDoubles& fields,
              std::size_t first) {
   if (!x.is_array()) throw SceneError(where + ": expected " + shape + ", " + found(x));
   if (x.size() != 2)
@@ -229,7 +229,7 @@ Scene parse_scene(std::string_view text, const std::string& source) {
     const std::string where = source + ": circle " + std::to_string(k);
     const auto field = [&](std::size_t f) { return where + ", field " + spec::name(spec::Field(f)); };
     const nlohmann::json& c = list[k];
-    std::array<double, 5> fields{};
+    spec::CircleDoubles fields{};
     std::optional<std::string> name;
     if (c.is_array()) {
       if (c.size() != 5)
@@ -334,14 +334,14 @@ SceneWorld load_scene_world(const std::string& path) {
 
 Scene default_scene() { return parse_scene(default_scene_json, "<embedded default scene>"); }
 
-std::vector<std::array<double, 5>> doubles_of(const std::vector<spec::Circle>& scene) {
-  std::vector<std::array<double, 5>> w;
+Circles doubles_of(const std::vector<spec::Circle>& scene) {
+  Circles w;
   w.reserve(scene.size());
   for (const spec::Circle& c : scene) w.push_back(spec::nearest_doubles(c));
   return w;
 }
 
-std::vector<std::array<double, 5>> doubles_of(const Scene& scene) { return doubles_of(scene.circles); }
+Circles doubles_of(const Scene& scene) { return doubles_of(scene.circles); }
 
 WorldTooLarge::WorldTooLarge(std::size_t circles, std::size_t bytes, std::size_t memory)
     : SceneError("world too large for memory: " + std::to_string(circles) + " circles need " + std::to_string(bytes) +
@@ -353,8 +353,7 @@ std::size_t physical_memory() {
   return static_cast<std::size_t>(pages) * static_cast<std::size_t>(page);
 }
 
-std::vector<std::array<double, 5>> random_world(std::size_t n, double coverage, std::uint64_t seed,
-                                                std::size_t bytes_per_circle) {
+Circles random_world(std::size_t n, double coverage, std::uint64_t seed, std::size_t bytes_per_circle) {
   const std::size_t memory = physical_memory();
   // n * bytes_per_circle > memory, without the product's overflow.
   if (bytes_per_circle > 0 && n > memory / bytes_per_circle) {

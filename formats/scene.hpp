@@ -9,7 +9,6 @@
 
 #include "spec/circle.hpp"
 
-#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <istream>
@@ -61,7 +60,7 @@ Scene load_scene(const std::string& path);
 struct SceneWorld {
   std::optional<std::string> name;
   std::optional<std::uint64_t> steps;
-  std::vector<std::array<double, 5>> circles;
+  spec::Circles circles;
 
   friend bool operator==(const SceneWorld&, const SceneWorld&) = default;
 };
@@ -80,8 +79,8 @@ Scene default_scene();
 
 // The doubles of a scene: every coordinate of a loaded scene is the exact value of a double, so this gives
 // those doubles back (a -0 as +0: a rational has no sign, and no step can tell them apart).
-std::vector<std::array<double, 5>> doubles_of(const std::vector<spec::Circle>& scene);
-std::vector<std::array<double, 5>> doubles_of(const Scene& scene);
+spec::Circles doubles_of(const std::vector<spec::Circle>& scene);
+spec::Circles doubles_of(const Scene& scene);
 
 // A world too large for this machine: "world too large for memory: 1000000000 circles need 320000000000 bytes,
 // more than the 25000000000 bytes of memory of this machine".
@@ -102,8 +101,7 @@ inline constexpr std::size_t kOracleBytesPerCircle = 5120;
 // doubles [px, py, vx, vy, r]. Throws WorldTooLarge, before allocating anything, when n circles at
 // `bytes_per_circle` each need more than physical_memory(), and SceneError for n = 0 or a coverage outside
 // (0, 1] or too small for a finite square.
-std::vector<std::array<double, 5>> random_world(std::size_t n, double coverage, std::uint64_t seed,
-                                                std::size_t bytes_per_circle);
+spec::Circles random_world(std::size_t n, double coverage, std::uint64_t seed, std::size_t bytes_per_circle);
 
 // The same as a Scene of exact circles, named by random_scene_name.
 Scene random_scene(std::size_t n, double coverage, std::uint64_t seed, std::size_t bytes_per_circle);

@@ -15,7 +15,7 @@
 namespace circles::formats {
 
 CircleSource source_of(const Circles& circles) {
-  return [&circles](std::size_t first, std::span<std::array<double, 5>> out) {
+  return [&circles](std::size_t first, std::span<spec::CircleDoubles> out) {
     std::copy_n(circles.begin() + static_cast<std::ptrdiff_t>(first), out.size(), out.begin());
   };
 }
@@ -28,7 +28,7 @@ namespace {
 // The text of circles [first, first + in.size()) at `out`, which has room for in.size() × kMaxCircleChars
 // characters: each circle ",[px,py,vx,vy,r]", without the comma for circle 0. Returns its end, or nullptr at
 // the first number that is not finite.
-char* format_part(char* out, std::size_t first, std::span<const std::array<double, 5>> in) {
+char* format_part(char* out, std::size_t first, std::span<const spec::CircleDoubles> in) {
   for (std::size_t i = 0; i < in.size(); ++i) {
     if (first + i != 0) *out++ = ',';
     *out++ = '[';
@@ -80,7 +80,7 @@ std::uint64_t LineWriter::write(const TextSink& sink, std::string_view counter, 
         try {
           own.circles.resize(kPartCircles);
           own.text.resize(kPartCircles * kMaxCircleChars);
-          const std::span<std::array<double, 5>> in(own.circles.data(), n);
+          const std::span<spec::CircleDoubles> in(own.circles.data(), n);
           source(first, in);
           end = format_part(own.text.data(), first, in);
           if (!end) throw std::domain_error("a JSON number must be finite");

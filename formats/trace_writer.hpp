@@ -12,7 +12,6 @@
 #include "formats/json_number.hpp"
 #include "formats/protocol.hpp"
 
-#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -24,7 +23,7 @@ namespace circles::formats {
 
 // A world read a slice at a time: source(first, out) sets out[i] to circle first + i, [px, py, vx, vy, r].
 // LineWriter calls it from several threads at once, on slices that do not overlap.
-using CircleSource = std::function<void(std::size_t first, std::span<std::array<double, 5>> out)>;
+using CircleSource = std::function<void(std::size_t first, std::span<spec::CircleDoubles> out)>;
 
 // The source of a world held whole.
 CircleSource source_of(const Circles& circles);
@@ -56,7 +55,7 @@ class LineWriter {
 
  private:
   struct Buffers {
-    std::vector<std::array<double, 5>> circles;
+    Circles circles;
     std::vector<char> text;
   };
   unsigned threads_;

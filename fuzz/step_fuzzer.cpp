@@ -56,7 +56,7 @@ fuzz::ExactChain exact_chain(const fuzz::Circles& w0, std::uint64_t steps, const
 std::optional<fuzz::Circles> as_doubles(const spec::Sequence& w) {
   fuzz::Circles out;
   for (const spec::Circle& c : w) {
-    const std::array<double, 5> d = spec::nearest_doubles(c);
+    const spec::CircleDoubles d = spec::nearest_doubles(c);
     for (const double x : d)
       if (!std::isfinite(x)) return std::nullopt;
     if (!(spec::from_doubles(d, 0, spec::Radii::non_negative) == c)) return std::nullopt;

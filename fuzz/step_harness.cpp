@@ -23,7 +23,7 @@ fuzz::Chain candidate_chain(const fuzz::StepInput& input, std::uint64_t steps) {
   for (std::uint64_t t = 1; t <= steps; ++t) {
     const int code = circles_step(input.circles.size(), in.data(), out.data());
     if (code == CIRCLES_STEP_OVERFLOW) {
-      chain.overflow = fuzz::Overflow{t, fuzz::Overflow::kUnknown, ""};
+      chain.overflow = fuzz::Overflow{t, fuzz::Overflow::kUnknown, spec::Field::px};
       break;
     }
     if (code != CIRCLES_STEP_OK)

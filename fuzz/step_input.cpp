@@ -117,7 +117,7 @@ StepInput decode(std::span<const std::uint8_t> bytes) {
   }
   for (std::size_t at = kHeaderBytes; at + kCircleBytes <= bytes.size() && input.circles.size() < kMaxCircles;
        at += kCircleBytes) {
-    std::array<double, 5> c{};
+    spec::CircleDoubles c{};
     for (std::size_t f = 0; f < 5; ++f) c[f] = std::bit_cast<double>(read_u64(bytes.subspan(at + 8 * f)));
     input.circles.push_back(c);
   }
@@ -146,7 +146,7 @@ StepInput mutate(StepInput input, std::uint64_t seed) {
       w = drawn_family_world(draw);
       break;
     case 1: {
-      std::array<double, 5> c{};
+      spec::CircleDoubles c{};
       for (double& x : c) x = kBoundaryValues[draw.below(kBoundaryValues.size())];
       w.push_back(c);
       break;

@@ -17,7 +17,6 @@
 
 #include "properties/boundaries.hpp"
 
-#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -25,7 +24,7 @@
 
 namespace circles::fuzz {
 
-using Circles = properties::Circles;
+using spec::Circles;
 
 inline constexpr std::uint64_t kMaxSteps = 16;
 inline constexpr std::size_t kHeaderBytes = 10;

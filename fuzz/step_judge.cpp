@@ -19,7 +19,7 @@ namespace {
 std::optional<Overflow> first_overflow(const Circles& w, std::uint64_t step) {
   for (std::size_t k = 0; k < w.size(); ++k)
     for (std::size_t f = 0; f < 2; ++f)
-      if (!std::isfinite(w[k][f])) return Overflow{step, k, f == 0 ? "px" : "py"};
+      if (!std::isfinite(w[k][f])) return Overflow{step, k, f == 0 ? spec::Field::px : spec::Field::py};
   return std::nullopt;
 }
 
@@ -27,7 +27,7 @@ std::optional<Overflow> first_overflow(const spec::Sequence& w, std::uint64_t st
   for (std::size_t k = 0; k < w.size(); ++k)
     for (std::size_t f = 0; f < 2; ++f)
       if (!std::isfinite(spec::nearest_double(w[k].p[static_cast<Eigen::Index>(f)])))
-        return Overflow{step, k, f == 0 ? "px" : "py"};
+        return Overflow{step, k, f == 0 ? spec::Field::px : spec::Field::py};
   return std::nullopt;
 }
 
@@ -35,7 +35,7 @@ std::string describe(const std::optional<Overflow>& o) {
   if (!o) return "no overflow";
   std::ostringstream out;
   out << "an overflow at step " << o->step;
-  if (o->index != Overflow::kUnknown) out << ", circle " << o->index << ' ' << o->field;
+  if (o->index != Overflow::kUnknown) out << ", circle " << o->index << ' ' << spec::name(o->field);
   return out.str();
 }
 

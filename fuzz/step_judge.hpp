@@ -29,13 +29,13 @@ inline constexpr std::uint64_t kBigSteps = 3;
 std::uint64_t judged_steps(const StepInput& input);
 
 // Where a chain stopped because a position would be ±infinity: at step `step` (1 for the step from w_0), the
-// first circle `index` and coordinate `field` ("px" before "py"), or index kUnknown when the step under test
-// does not say (the C ABI).
+// first circle `index` and coordinate `field` (px before py), or index kUnknown when the step under test
+// does not say (the C ABI), and then `field` means nothing.
 struct Overflow {
   static constexpr std::size_t kUnknown = ~std::size_t{0};
   std::uint64_t step = 0;
   std::size_t index = kUnknown;
-  std::string field;
+  spec::Field field = spec::Field::px;
 };
 
 // w_1 … w_m of a chain, then the overflow that stopped it, if any.

@@ -30,7 +30,7 @@ constexpr double kOverflowFreeReach = 0x1p1023;
 
 // ── World ─────────────────────────────────────────────────────────────────────────────────────────────
 
-World::World(const std::vector<std::array<double, 5>>& circles) {
+World::World(const spec::Circles& circles) {
   const std::size_t n = circles.size();
   if (n > std::numeric_limits<std::uint32_t>::max())
     throw std::length_error("World: " + std::to_string(n) + " circles; at most 2^32 - 1");
@@ -45,8 +45,8 @@ World::World(const std::vector<std::array<double, 5>>& circles) {
   }
 }
 
-std::vector<std::array<double, 5>> World::circles() const {
-  std::vector<std::array<double, 5>> out(size());
+spec::Circles World::circles() const {
+  spec::Circles out(size());
   for (std::size_t k = 0; k < size(); ++k) out[k] = {px_[k], py_[k], vx_[k], vy_[k], r_[k]};
   return out;
 }
@@ -62,12 +62,12 @@ bool World::precedes(std::size_t a, std::size_t b) const noexcept {
   return a < b;
 }
 
-std::string overflow_reason(std::size_t index, std::string_view field) {
-  return "circle " + std::to_string(index) + ", field " + std::string(field) +
+std::string overflow_reason(std::size_t index, spec::Field field) {
+  return "circle " + std::to_string(index) + ", field " + spec::name(field) +
          ": the position p + v/60 overflows to infinity";
 }
 
-PositionOverflow::PositionOverflow(std::uint64_t s, std::size_t i, const char* f)
+PositionOverflow::PositionOverflow(std::uint64_t s, std::size_t i, spec::Field f)
     : std::overflow_error("step " + std::to_string(s) + ", " + overflow_reason(i, f)),
       step(s),
       index(i),
@@ -111,7 +111,7 @@ std::vector<std::uint32_t> BasicEngine<A>::slots() const {
 
 template <class A>
 void BasicEngine<A>::read_circles(std::span<const std::uint32_t> slots, std::size_t first,
-                                  std::span<std::array<double, 5>> out) const {
+                                  std::span<spec::CircleDoubles> out) const {
   for (std::size_t i = 0; i < out.size(); ++i) {
     const std::uint32_t t = slots[first + i];
     out[i] = {now_.px[t], now_.py[t], now_.vx[t], now_.vy[t], now_.r[t]};
@@ -190,7 +190,7 @@ void BasicEngine<A>::advance() {
       now_.vx[m.slot] = m.vx;
       now_.vy[m.slot] = m.vy;
     }
-  throw PositionOverflow(stats_.steps + 1, first / 2, first % 2 ? "py" : "px");
+  throw PositionOverflow(stats_.steps + 1, first / 2, first % 2 ? spec::Field::py : spec::Field::px);
 }
 
 template <class A>
@@ -296,8 +296,8 @@ World step_from_contacts(const World& w, std::span<const std::size_t> least) {
     next.py_[k] = advance_rounded(w.py_[k], next.vy_[k]);
   }
   for (std::size_t k = 0; k < n; ++k) {
-    if (!std::isfinite(next.px_[k])) throw PositionOverflow(1, k, "px");
-    if (!std::isfinite(next.py_[k])) throw PositionOverflow(1, k, "py");
+    if (!std::isfinite(next.px_[k])) throw PositionOverflow(1, k, spec::Field::px);
+    if (!std::isfinite(next.py_[k])) throw PositionOverflow(1, k, spec::Field::py);
   }
   return next;
 }

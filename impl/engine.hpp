@@ -20,13 +20,11 @@
 #include "impl/cell_layout.hpp"
 #include "spec/outside_c.hpp"
 
-#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <span>
 #include <stdexcept>
 #include <string>
-#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -40,10 +38,10 @@ class World {
   World() = default;
   // From [px, py, vx, vy, r] per circle. Throws spec::OutsideC for the first circle outside C of the resolved
   // profile, with the oracle's own check (spec::check_doubles), and std::length_error for 2^32 circles or more.
-  explicit World(const std::vector<std::array<double, 5>>& circles);
+  explicit World(const spec::Circles& circles);
 
   // Back to [px, py, vx, vy, r] per circle, the same doubles bit for bit.
-  std::vector<std::array<double, 5>> circles() const;
+  spec::Circles circles() const;
 
   std::size_t size() const noexcept { return px_.size(); }
   std::span<const double> px() const noexcept { return px_; }
@@ -64,18 +62,19 @@ class World {
 };
 
 // A step whose position overflows: at step `step` (the step that would make world `step` from world
-// `step` − 1), circle `index`'s coordinate `field` ("px" or "py") would become ±infinity. The world is left
+// `step` − 1), circle `index`'s coordinate `field` (px or py) would become ±infinity. The world is left
 // as it was before that step.
 // "circle <index>, field <field>: the position p + v/60 overflows to infinity": the reason every overflow of a
-// position is reported with, by the engines and by `circles conform`'s steppers.
-std::string overflow_reason(std::size_t index, std::string_view field);
+// position is reported with: by the engines here, and by the registry's steppers, `circles serve` and
+// `circles check-trace`.
+std::string overflow_reason(std::size_t index, spec::Field field);
 
 class PositionOverflow : public std::overflow_error {
  public:
-  PositionOverflow(std::uint64_t step, std::size_t index, const char* field);
+  PositionOverflow(std::uint64_t step, std::size_t index, spec::Field field);
   std::uint64_t step;
   std::size_t index;
-  const char* field;
+  spec::Field field;
 };
 
 // The engine: circles kept in cell order (impl/broad_phase.hpp), a list of the pairs that can meet before
@@ -95,7 +94,7 @@ class BasicEngine {
   // It only reads, so threads may call it at once on any slices.
   std::vector<std::uint32_t> slots() const;
   void read_circles(std::span<const std::uint32_t> slots, std::size_t first,
-                    std::span<std::array<double, 5>> out) const;
+                    std::span<spec::CircleDoubles> out) const;
   // Steps taken since construction.
   std::uint64_t steps() const noexcept { return stats_.steps; }
   // Steps whose list was empty: no pair was tested, every circle only moved.

@@ -387,7 +387,7 @@ void ExactEngine::take_velocities(Columns<Int>& s) {
     }
     if (first != kNone) {
       untouch();
-      throw PositionOverflow(stats_.steps + 1, first / 2, first % 2 ? "py" : "px");
+      throw PositionOverflow(stats_.steps + 1, first / 2, first % 2 ? spec::Field::py : spec::Field::px);
     }
   }
   // Every new velocity first, read from world t (a slot's least contact may be touched too), then written;
@@ -584,7 +584,7 @@ std::vector<CandidatePair> ExactEngine::candidates() const {
 }
 
 World ExactEngine::world() const {
-  std::vector<std::array<double, 5>> out(size());
+  spec::Circles out(size());
   std::visit(
       [&](const auto& s) {
         using Int = typename std::decay_t<decltype(s.x)>::value_type;

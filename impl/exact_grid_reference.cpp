@@ -32,7 +32,7 @@ namespace {
 
 using exact::raw;
 using exact::Wide;
-using Circles = std::vector<std::array<double, 5>>;
+using spec::Circles;
 
 }  // namespace
 
@@ -113,8 +113,8 @@ void ExactGrid::step() {
     mpz_set(raw(next_vx_[k]), raw(vx_[e]));
     mpz_set(raw(next_vy_[k]), raw(vy_[e]));
     const double px = exact::round_quotient(next_x_[k], den_), py = exact::round_quotient(next_y_[k], den_);
-    if (std::isinf(px)) throw PositionOverflow(steps_ + 1, k, "px");
-    if (std::isinf(py)) throw PositionOverflow(steps_ + 1, k, "py");
+    if (std::isinf(px)) throw PositionOverflow(steps_ + 1, k, spec::Field::px);
+    if (std::isinf(py)) throw PositionOverflow(steps_ + 1, k, spec::Field::py);
     // v_e's nearest double is e's, since the velocity is a copy.
     next_rounded_[k] = {px, py, rounded_[e][2], rounded_[e][3], rounded_[k][4]};
   }

@@ -23,7 +23,6 @@
 #include "impl/exact_integer.hpp"
 #include "spec/oracle.hpp"
 
-#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -50,7 +49,7 @@ inline constexpr double kNearestFloor = 0x1p-1021;
 // The side of the exact grid's cells for a world whose nearest doubles are `rounded` (each circle
 // [px, py, vx, vy, r]): uniform_side of the largest rounded radius and the rounded centres, when it is at least
 // kExactGridMinSide; else nothing (every pair is asked).
-std::optional<double> exact_grid_side(const std::vector<std::array<double, 5>>& rounded);
+std::optional<double> exact_grid_side(const spec::Circles& rounded);
 
 class ExactGrid {
  public:
@@ -58,7 +57,7 @@ class ExactGrid {
   // nearest double is infinite, naming the circle and field, as ExactEngine does.
   explicit ExactGrid(const spec::Sequence& w0);
   // From doubles, each taken at its exact value. Throws spec::OutsideC for NaN, infinities and r < 0.
-  explicit ExactGrid(const std::vector<std::array<double, 5>>& w0);
+  explicit ExactGrid(const spec::Circles& w0);
 
   // One resolved step. Throws PositionOverflow (state unchanged) for the first circle, px before py, whose
   // new position rounds to ±infinity.
@@ -67,7 +66,7 @@ class ExactGrid {
   std::uint64_t steps() const noexcept { return steps_; }
   std::size_t size() const noexcept { return rounded_.size(); }
   // The state rounded to doubles, circle k at index k.
-  const std::vector<std::array<double, 5>>& rounded() const noexcept { return rounded_; }
+  const spec::Circles& rounded() const noexcept { return rounded_; }
   // The exact state as rationals.
   spec::Sequence exact() const;
 
@@ -84,7 +83,7 @@ class ExactGrid {
   std::vector<exact::Wide> next_x_, next_y_, next_vx_, next_vy_;  // the step's results before they are kept
   exact::Wide sum_, dx_, dy_;                                      // intersect's scratch
   std::vector<double> error_;  // per circle, this step: the error bound of its nearest doubles (kNearestRelative)
-  std::vector<std::array<double, 5>> rounded_, next_rounded_;
+  spec::Circles rounded_, next_rounded_;
   std::uint64_t steps_ = 0;
 };
 

@@ -102,7 +102,7 @@ double approximate(const Wide& n, const Wide& d) noexcept;
 struct Scaled {
   Wide den, den_v;  // D and L
   std::array<std::vector<Wide>, 5> columns;  // X, Y, V_x, V_y, R, circle k at index k
-  std::vector<std::array<double, 5>> rounded;
+  spec::Circles rounded;
 };
 // Throws spec::OutsideC for a negative radius, and for a field whose nearest double is infinite, naming the
 // circle and field.

@@ -26,7 +26,7 @@ double uniform_signed(std::mt19937_64& rng) { return 2 * uniform01(rng) - 1; }
 
 }  // namespace
 
-std::vector<std::array<double, 5>> random_scene(std::size_t n, double coverage, std::uint64_t seed) {
+spec::Circles random_scene(std::size_t n, double coverage, std::uint64_t seed) {
   if (n == 0) throw std::invalid_argument("random_scene: n is 0; a scene has at least one circle");
   // Written so that NaN fails too: every comparison with NaN is false.
   if (!(coverage > 0 && coverage <= 1))
@@ -34,7 +34,7 @@ std::vector<std::array<double, 5>> random_scene(std::size_t n, double coverage, 
                                 " is not in (0, 1] (the circles' total area over the square's)");
 
   std::mt19937_64 rng(seed);
-  std::vector<std::array<double, 5>> scene(n);
+  spec::Circles scene(n);
   double area = 0;
   for (auto& c : scene) {
     c[4] = kSceneMinRadius + (kSceneMaxRadius - kSceneMinRadius) * uniform01(rng);

@@ -11,10 +11,10 @@
 // (x >> 11)·2^−53 of one 64-bit output x: exact, the top 53 bits.
 #pragma once
 
-#include <array>
+#include "spec/outside_c.hpp"
+
 #include <cstddef>
 #include <cstdint>
-#include <vector>
 
 namespace circles::impl {
 
@@ -27,6 +27,6 @@ inline constexpr double kSceneMaxSpeed = 100;
 //   side = √(Σ π r² / coverage); (px, py) = (side·u, side·u'), so 0 ≤ px, py ≤ side.
 // Throws std::invalid_argument, naming the argument, when n is 0, when coverage is not in (0, 1] (NaN
 // included), or when coverage is so small that the side overflows to infinity.
-std::vector<std::array<double, 5>> random_scene(std::size_t n, double coverage, std::uint64_t seed);
+spec::Circles random_scene(std::size_t n, double coverage, std::uint64_t seed);
 
 }  // namespace circles::impl

@@ -4,8 +4,8 @@
 
 namespace circles::impl {
 
-void StateHash::add(std::span<const std::array<double, 5>> world) noexcept {
-  for (const std::array<double, 5>& circle : world)
+void StateHash::add(std::span<const spec::CircleDoubles> world) noexcept {
+  for (const spec::CircleDoubles& circle : world)
     for (const double field : circle) {
       // x + 0.0 is +0 for x = ±0 and x for every other finite x (round to nearest): the ±0 policy.
       const std::uint64_t bits = std::bit_cast<std::uint64_t>(field + 0.0);
@@ -16,7 +16,7 @@ void StateHash::add(std::span<const std::array<double, 5>> world) noexcept {
     }
 }
 
-std::uint64_t state_hash(std::span<const std::array<double, 5>> world) noexcept {
+std::uint64_t state_hash(std::span<const spec::CircleDoubles> world) noexcept {
   StateHash h;
   h.add(world);
   return h.value();

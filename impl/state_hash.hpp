@@ -10,10 +10,10 @@
 //   The empty world has no bytes: its hash is the offset basis.
 #pragma once
 
-#include <array>
+#include "spec/outside_c.hpp"
+
 #include <cstdint>
 #include <span>
-#include <vector>
 
 namespace circles::impl {
 
@@ -24,7 +24,7 @@ inline constexpr std::uint64_t kFnvPrime = 0x100000001b3;
 class StateHash {
  public:
   // Adds bytes(world).
-  void add(std::span<const std::array<double, 5>> world) noexcept;
+  void add(std::span<const spec::CircleDoubles> world) noexcept;
   std::uint64_t value() const noexcept { return h_; }
 
  private:
@@ -32,6 +32,6 @@ class StateHash {
 };
 
 // state_hash(world) = FNV-1a of bytes(world).
-std::uint64_t state_hash(std::span<const std::array<double, 5>> world) noexcept;
+std::uint64_t state_hash(std::span<const spec::CircleDoubles> world) noexcept;
 
 }  // namespace circles::impl

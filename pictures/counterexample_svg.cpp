@@ -59,7 +59,7 @@ class PageView {
 
 // An answer may hold NaN, infinities or a negative radius (formats/protocol.hpp, Reading::answer): such a circle
 // has no place in the picture, and the report's lines say what it was.
-bool drawable(const std::array<double, 5>& c) { return std::isfinite(c[0]) && std::isfinite(c[1]) && std::isfinite(c[4]) && c[4] >= 0; }
+bool drawable(const spec::CircleDoubles& c) { return std::isfinite(c[0]) && std::isfinite(c[1]) && std::isfinite(c[4]) && c[4] >= 0; }
 
 // The most circles of a world framed whole: the small families' 8.
 constexpr std::size_t kFramedWhole = 8;
@@ -68,7 +68,7 @@ constexpr std::size_t kFramedWhole = 8;
 
 std::array<long double, 4> framed_box(const CounterexamplePicture& p) {
   long double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
-  const auto include = [&](const std::array<double, 5>& c) {
+  const auto include = [&](const spec::CircleDoubles& c) {
     if (!drawable(c)) return;
     const long double r = c[4];
     x0 = std::min(x0, c[0] - r);
@@ -105,7 +105,7 @@ PageView fit(const CounterexamplePicture& p, double band) {
   return PageView(band, x0, x1, y0, y1);
 }
 
-void circle(cairo_t* cr, const PageView& v, const std::array<double, 5>& c) {
+void circle(cairo_t* cr, const PageView& v, const spec::CircleDoubles& c) {
   cairo_new_sub_path(cr);
   cairo_arc(cr, v.x(c[0]), v.y(c[1]), v.length(c[4]), 0, 2 * std::numbers::pi);
 }
@@ -161,7 +161,7 @@ std::vector<std::string> position_labels(const CounterexamplePicture& p) {
   if (!drawable(expected) || !drawable(actual)) return {};
   const PageView v = fit(p, 0);
   if (std::hypot(v.x(expected[0]) - v.x(actual[0]), v.y(expected[1]) - v.y(actual[1])) >= 2 * kMarker) return {};
-  const auto label = [](const char* what, const std::array<double, 5>& c) {
+  const auto label = [](const char* what, const spec::CircleDoubles& c) {
     std::string text(what);
     text.append(" (");
     formats::json_number::append_any(text, c[0]);

@@ -25,7 +25,7 @@
 
 namespace circles::pictures {
 
-using formats::Circles;
+using spec::Circles;
 
 struct CounterexamplePicture {
   Circles world;              // the world asked

@@ -41,7 +41,7 @@ double contact_width(double drawn_radius) {
 
 namespace {
 
-bool finite(const std::array<double, 5>& c) {
+bool finite(const spec::CircleDoubles& c) {
   return std::isfinite(c[0]) && std::isfinite(c[1]) && std::isfinite(c[4]);
 }
 
@@ -120,7 +120,7 @@ constexpr long double kHugeRadius = 0x1p21L;
 constexpr long double kHalfDiagonal = 734.4;  // ⌈√(640² + 360²)⌉ to 0.1: 734.30...
 constexpr double kHalfPlaneExtent = 2000;     // > kHalfDiagonal + kSlack: the half-plane's polygon covers the frame
 
-Placed place(const std::array<double, 5>& c, const View& view) {
+Placed place(const spec::CircleDoubles& c, const View& view) {
   const long double x = kW / 2 + (c[0] - view.cx) * view.scale, y = kH / 2 + (c[1] - view.cy) * view.scale;
   const long double r = std::max<long double>(c[4] * view.scale, kMinRadius);
   if (x + r < -kSlack || x - r > kW + kSlack || y + r < -kSlack || y - r > kH + kSlack) return {};

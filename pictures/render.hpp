@@ -30,7 +30,7 @@ struct _cairo_surface;  // cairo_surface_t, kept out of this header so that only
 
 namespace circles::pictures {
 
-using formats::Circles;
+using spec::Circles;
 using formats::OutputError;
 using formats::OutputFile;
 

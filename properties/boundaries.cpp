@@ -13,7 +13,7 @@
 namespace circles::properties {
 namespace {
 
-using Circle = std::array<double, 5>;
+using spec::CircleDoubles;
 
 constexpr Family kAll[] = {
     Family::lattice,      Family::random_doubles,  Family::tangency,           Family::ulp_nudge,
@@ -33,13 +33,13 @@ constexpr Family kLiteral[] = {
 
 // (6) and (7) on all five fields: a <= b in px, py, vx, vy and r. Comparisons of doubles are exact, and
 // −0 == +0 as for the exact values.
-bool product_leq(const Circle& a, const Circle& b) {
+bool product_leq(const CircleDoubles& a, const CircleDoubles& b) {
   for (std::size_t f = 0; f < 5; ++f)
     if (!(a[f] <= b[f])) return false;
   return true;
 }
 
-bool equal(const Circle& a, const Circle& b) {
+bool equal(const CircleDoubles& a, const CircleDoubles& b) {
   for (std::size_t f = 0; f < 5; ++f)
     if (!(a[f] == b[f])) return false;
   return true;

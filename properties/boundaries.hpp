@@ -9,20 +9,21 @@
 // docs/properties.md lists the families and how each is built.
 #pragma once
 
+#include "spec/outside_c.hpp"
+
 #include <rapidcheck.h>
 
-#include <array>
 #include <cstdint>
 #include <optional>
 #include <span>
 #include <string>
 #include <string_view>
-#include <vector>
 
 namespace circles::properties {
 
-// A world as the step protocol carries it: [px, py, vx, vy, r] per circle, finite doubles, r >= 0.
-using Circles = std::vector<std::array<double, 5>>;
+// A world as the step protocol carries it (spec::Circles): [px, py, vx, vy, r] per circle, finite doubles,
+// r >= 0.
+using spec::Circles;
 
 // resolved: worlds are sequences, circle k's image is circle k, e is the least contact in lexicographic
 //           order; r >= 0 (docs/math.md). Every finite world with r >= 0 is in its domain.

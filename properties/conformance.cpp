@@ -39,9 +39,11 @@ const std::string kLeastContact = "the least-contact rule e (8) (docs/math.md#8-
 // Which decision of circle k's step differs (at `field`, the first that does): its contacts by (3), exactly, on
 // the input doubles. A radius is judged only when the position and velocity before it are right, and no decision
 // touches it.
-std::string decision(const Circles& in, std::size_t k, int field, const Circles& expected, const Circles& actual) {
-  if (field == 4) return "none: the position and velocity are right, but the radius changed, which no step does";
-  const auto same_velocity = [](const std::array<double, 5>& a, const std::array<double, 5>& b) {
+std::string decision(const Circles& in, std::size_t k, spec::Field field, const Circles& expected,
+                     const Circles& actual) {
+  if (field == spec::Field::r)
+    return "none: the position and velocity are right, but the radius changed, which no step does";
+  const auto same_velocity = [](const spec::CircleDoubles& a, const spec::CircleDoubles& b) {
     return a[2] == b[2] && a[3] == b[3];
   };
   if (same_velocity(expected[k], actual[k])) return "none: the velocity is right, the position is not the nearest double";
@@ -98,11 +100,6 @@ Level parse_level(std::string_view text) {
   throw std::invalid_argument("--level: \"" + std::string(text) + "\" is not exact, faithful or ulps:K (K an integer)");
 }
 
-const char* field_name(int field) {
-  constexpr const char* names[] = {"px", "py", "vx", "vy", "r"};
-  return field >= 0 && field < 5 ? names[field] : "?";
-}
-
 std::variant<Circles, NoAnswer> expected_step(const Circles& w, Profile profile) {
   if (profile == Profile::resolved) {
     // Small worlds: impl::step_all_pairs, the exact step with every pair tested (intersect_exact,
@@ -139,12 +136,13 @@ std::variant<Circles, NoAnswer> expected_step(const Circles& w, Profile profile)
 
 std::optional<Difference> compare(const Circles& input, const Circles& expected, const Circles& actual, Level level) {
   for (std::size_t k = 0; k < expected.size(); ++k)
-    for (int f = 0; f < 5; ++f) {
-      const double e = expected[k][static_cast<std::size_t>(f)], a = actual[k][static_cast<std::size_t>(f)];
+    for (std::size_t f = 0; f < expected[k].size(); ++f) {
+      const double e = expected[k][f], a = actual[k][f];
+      const spec::Field field = spec::Field(f);
       // Velocities and radii are copied, never computed: exact at every level. Positions within the level.
-      const bool position = f < 2;
+      const bool position = field == spec::Field::px || field == spec::Field::py;
       const bool equal = position ? std::isfinite(a) && ulps_between(e, a) <= level.ulps : e == a;
-      if (!equal) return Difference{k, f, e, a, decision(input, k, f, expected, actual)};
+      if (!equal) return Difference{k, field, e, a, decision(input, k, field, expected, actual)};
     }
   return std::nullopt;
 }
@@ -165,7 +163,7 @@ void step_conforms(const Step& step, const Options& options) {
       const Difference& d = f.difference;
       RC_LOG() << "family " << name(family) << ", step " << f.step << " of " << f.steps << ", "
                << name(options.profile) << " profile, level " << options.level.text() << "\n";
-      RC_FAIL("circle " + std::to_string(d.circle) + ", field " + field_name(d.field) + ": expected " +
+      RC_FAIL("circle " + std::to_string(d.circle) + ", field " + spec::name(d.field) + ": expected " +
               hex(d.expected) + ", got " + hex(d.actual) + "; which decision: " + d.decision);
     }
   }

@@ -46,7 +46,7 @@ std::variant<Circles, NoAnswer> expected_step(const Circles& w, Profile profile)
 // The first coordinate at which `actual` differs from `expected` (the answer for `input`) at `level`.
 struct Difference {
   std::size_t circle;
-  int field;  // 0 px, 1 py, 2 vx, 3 vy, 4 r
+  spec::Field field;  // printed with spec::name: "px" … "r"
   double expected, actual;
   // Which decision differs, in words, with its section of docs/math.md: "the intersect test (3)
   // (docs/math.md#3-intersect--specintersect): circle 0 touches circle 1 but kept its own velocity", "the
@@ -56,7 +56,6 @@ struct Difference {
   std::string decision;
 };
 std::optional<Difference> compare(const Circles& input, const Circles& expected, const Circles& actual, Level level);
-const char* field_name(int field);  // "px" … "r"
 
 struct Options {
   Profile profile = Profile::resolved;

@@ -183,13 +183,13 @@ rc::Gen<std::vector<std::size_t>> permutation(std::size_t n) {
       });
 }
 
-rc::Gen<std::vector<std::array<double, 5>>> double_world(std::size_t max_size, rc::Gen<double> field) {
-  const rc::Gen<std::array<double, 5>> circle = rc::gen::map(rc::gen::tuple(field, field, field, field, field), [](const auto& t) {
+rc::Gen<spec::Circles> double_world(std::size_t max_size, rc::Gen<double> field) {
+  const rc::Gen<spec::CircleDoubles> circle = rc::gen::map(rc::gen::tuple(field, field, field, field, field), [](const auto& t) {
     const auto& [px, py, vx, vy, r] = t;
-    return std::array<double, 5>{px, py, vx, vy, std::fabs(r)};
+    return spec::CircleDoubles{px, py, vx, vy, std::fabs(r)};
   });
   return rc::gen::mapcat(rc::gen::inRange<std::size_t>(0, max_size + 1),
-                         [circle](std::size_t n) { return rc::gen::container<std::vector<std::array<double, 5>>>(n, circle); });
+                         [circle](std::size_t n) { return rc::gen::container<spec::Circles>(n, circle); });
 }
 
 }  // namespace circles::properties::gen

@@ -11,7 +11,6 @@
 
 #include <rapidcheck.h>
 
-#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -49,7 +48,7 @@ rc::Gen<std::vector<spec::Circle>> set_for_e(spec::Radii radii, std::size_t max_
 // A world of 0 … max_size circles in doubles, [px, py, vx, vy, r], every field drawn from `field` and the radius
 // made |field| (so r ≥ 0): worlds for the engines and the protocol, which take doubles.
 // Shrinks by dropping circles and shrinking fields.
-rc::Gen<std::vector<std::array<double, 5>>> double_world(std::size_t max_size, rc::Gen<double> field);
+rc::Gen<spec::Circles> double_world(std::size_t max_size, rc::Gen<double> field);
 
 // A permutation of 0 … n-1, uniformly; shrinks towards the identity. Apply it with permute().
 rc::Gen<std::vector<std::size_t>> permutation(std::size_t n);

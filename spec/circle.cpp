@@ -15,19 +15,19 @@ void check_radius(const Circle& c, std::size_t index, Radii radii) {
     throw OutsideC(index, Field::r, "radius " + to_string(c.r) + " is negative (r >= 0, the resolved profile)");
 }
 
-Circle from_doubles(const std::array<double, 5>& fields, std::size_t index, Radii radii) {
+Circle from_doubles(const CircleDoubles& fields, std::size_t index, Radii radii) {
   check_doubles(fields, index, radii);
   return circle(exact(fields[0]), exact(fields[1]), exact(fields[2]), exact(fields[3]), exact(fields[4]));
 }
 
-std::vector<Circle> from_doubles(const std::vector<std::array<double, 5>>& circles, Radii radii) {
+std::vector<Circle> from_doubles(const Circles& circles, Radii radii) {
   std::vector<Circle> out;
   out.reserve(circles.size());
   for (std::size_t k = 0; k < circles.size(); ++k) out.push_back(from_doubles(circles[k], k, radii));
   return out;
 }
 
-std::array<double, 5> nearest_doubles(const Circle& c) {
+CircleDoubles nearest_doubles(const Circle& c) {
   return {nearest_double(c.p.x()), nearest_double(c.p.y()), nearest_double(c.v.x()), nearest_double(c.v.y()),
           nearest_double(c.r)};
 }

@@ -4,7 +4,6 @@
 #include "spec/outside_c.hpp"
 #include "spec/rational.hpp"
 
-#include <array>
 #include <cstddef>
 #include <ostream>
 #include <stdexcept>
@@ -31,13 +30,13 @@ void check_radius(const Circle& c, std::size_t index, Radii radii);
 
 // The circle with the exact values of five doubles [px, py, vx, vy, r].
 // Throws OutsideC as check_doubles does.
-Circle from_doubles(const std::array<double, 5>& fields, std::size_t index, Radii radii);
+Circle from_doubles(const CircleDoubles& fields, std::size_t index, Radii radii);
 // A world of doubles [px, py, vx, vy, r] per circle at its exact values, circle k from circles[k] (a
 // spec::Sequence). Throws OutsideC for the first circle outside C, as from_doubles does.
-std::vector<Circle> from_doubles(const std::vector<std::array<double, 5>>& circles, Radii radii);
+std::vector<Circle> from_doubles(const Circles& circles, Radii radii);
 
 // The five coordinates of c, each rounded to the nearest double (see nearest_double).
-std::array<double, 5> nearest_doubles(const Circle& c);
+CircleDoubles nearest_doubles(const Circle& c);
 
 // "(px, py, vx, vy, r)" with exact rationals; operator<< writes the same, so GoogleTest and RapidCheck print
 // circles readably in failures.

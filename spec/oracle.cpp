@@ -37,9 +37,9 @@ Sequence resolved_step(const Sequence& w) {
   return sequence(std::get<World<Indexed>>(next));
 }
 
-std::vector<std::array<double, 5>> resolved_step_rounded(const std::vector<std::array<double, 5>>& w) {
+Circles resolved_step_rounded(const Circles& w) {
   const Sequence exact_w = from_doubles(w, Radii::non_negative);
-  std::vector<std::array<double, 5>> out;
+  Circles out;
   out.reserve(w.size());
   for (const Circle& c : resolved_step(exact_w)) out.push_back(nearest_doubles(c));
   return out;

@@ -4,7 +4,6 @@
 
 #include "spec/equations.hpp"
 
-#include <array>
 #include <vector>
 
 namespace circles::spec {
@@ -35,6 +34,6 @@ Sequence resolved_step(const Sequence& w);
 // The same step from doubles [px, py, vx, vy, r], with the exact result rounded to nearest, ties to even
 // (the "correctly rounded oracle step" that the double engines are held to). Throws OutsideC for NaN,
 // infinities and r < 0.
-std::vector<std::array<double, 5>> resolved_step_rounded(const std::vector<std::array<double, 5>>& w);
+Circles resolved_step_rounded(const Circles& w);
 
 }  // namespace circles::spec

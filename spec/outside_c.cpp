@@ -33,7 +33,7 @@ std::string shortest(double x) {
 
 }  // namespace
 
-void check_doubles(const std::array<double, 5>& fields, std::size_t index, Radii radii) {
+void check_doubles(const CircleDoubles& fields, std::size_t index, Radii radii) {
   for (std::size_t k = 0; k < fields.size(); ++k) {
     const double x = fields[k];
     if (std::isnan(x)) throw OutsideC(index, Field(k), "NaN");

@@ -6,12 +6,20 @@
 #include <cstddef>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace circles::spec {
 
-// The five coordinates in the protocol's order [px, py, vx, vy, r].
+// The five coordinates in the protocol's order [px, py, vx, vy, r]; Field(k) is the coordinate at index k of
+// a CircleDoubles. name(f) is its name in every message: "px", "py", "vx", "vy" or "r".
 enum class Field { px, py, vx, vy, r };
 const char* name(Field f);
+
+// One circle as doubles, [px, py, vx, vy, r], and a world of them, circle k at index k: what the engines
+// step, the step protocol and traces carry, and the oracle takes and rounds to (an exact circle is a Circle,
+// spec/circle.hpp, and an exact world a Sequence, spec/oracle.hpp).
+using CircleDoubles = std::array<double, 5>;
+using Circles = std::vector<CircleDoubles>;
 
 // An input that is not an element of C: NaN or infinity in any field, or a radius the profile refuses.
 // `index` is the circle's position in the input, `field` the coordinate at fault.
@@ -28,6 +36,6 @@ enum class Radii { positive, non_negative };
 
 // Throws OutsideC unless [px, py, vx, vy, r] is an element of C: the first NaN or infinite field, in field
 // order, else a radius that `radii` refuses. `index` names the circle in the message.
-void check_doubles(const std::array<double, 5>& fields, std::size_t index, Radii radii);
+void check_doubles(const CircleDoubles& fields, std::size_t index, Radii radii);
 
 }  // namespace circles::spec

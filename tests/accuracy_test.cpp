@@ -24,8 +24,8 @@ const std::string scenes = std::string(CIRCLES_SOURCE_DIR) + "/scenes/";
 
 spec::Sequence load(const std::string& name) { return formats::load_scene(scenes + name + ".json").circles; }
 
-std::vector<std::array<double, 5>> doubles(const spec::Sequence& w) {
-  std::vector<std::array<double, 5>> out;
+spec::Circles doubles(const spec::Sequence& w) {
+  spec::Circles out;
   for (const spec::Circle& c : w) out.push_back(spec::nearest_doubles(c));
   return out;
 }

@@ -25,8 +25,8 @@ namespace spec = circles::spec;
 using properties::Circles;
 using properties::Family;
 using properties::Profile;
+using spec::CircleDoubles;
 using spec::Q;
-using C5 = std::array<double, 5>;
 
 std::vector<Circles> sample(const rc::Gen<Circles>& g, int n, std::uint64_t seed) {
   rc::Random random(seed);
@@ -37,16 +37,16 @@ std::vector<Circles> sample(const rc::Gen<Circles>& g, int n, std::uint64_t seed
 
 Q q(double x) { return spec::exact(x); }
 
-bool touch(const C5& a, const C5& b) {
+bool touch(const CircleDoubles& a, const CircleDoubles& b) {
   return spec::intersect(spec::from_doubles(a, 0, spec::Radii::non_negative), spec::from_doubles(b, 1, spec::Radii::non_negative));
 }
 
-bool tangent(const C5& a, const C5& b) {
+bool tangent(const CircleDoubles& a, const CircleDoubles& b) {
   const Q dx = q(b[0]) - q(a[0]), dy = q(b[1]) - q(a[1]), s = q(a[4]) + q(b[4]);
   return dx * dx + dy * dy == s * s;
 }
 
-bool product_leq(const C5& a, const C5& b) {
+bool product_leq(const CircleDoubles& a, const CircleDoubles& b) {
   for (std::size_t f = 0; f < 5; ++f)
     if (!(q(a[f]) <= q(b[f]))) return false;
   return true;
@@ -57,7 +57,7 @@ double nudged(double x, int n) {
   return x;
 }
 
-bool any_pair(const Circles& w, const std::function<bool(const C5&, const C5&)>& p) {
+bool any_pair(const Circles& w, const std::function<bool(const CircleDoubles&, const CircleDoubles&)>& p) {
   for (std::size_t a = 0; a < w.size(); ++a)
     for (std::size_t b = a + 1; b < w.size(); ++b)
       if (p(w[a], w[b])) return true;
@@ -65,7 +65,7 @@ bool any_pair(const Circles& w, const std::function<bool(const C5&, const C5&)>&
 }
 
 // Some circle c has two contacts x and y (different places in w) for which `p(x, y)` holds.
-bool two_contacts(const Circles& w, const std::function<bool(const C5&, const C5&)>& p) {
+bool two_contacts(const Circles& w, const std::function<bool(const CircleDoubles&, const CircleDoubles&)>& p) {
   for (std::size_t c = 0; c < w.size(); ++c)
     for (std::size_t x = 0; x < w.size(); ++x)
       for (std::size_t y = 0; y < w.size(); ++y)
@@ -74,10 +74,15 @@ bool two_contacts(const Circles& w, const std::function<bool(const C5&, const C5
 }
 
 // x and y equal in the first t fields of the key (px, py, vx, vy, r), by value, and different in the next.
-bool tie(const C5& x, const C5& y, std::size_t t) {
+bool tie(const CircleDoubles& x, const CircleDoubles& y, std::size_t t) {
   for (std::size_t f = 0; f < t; ++f)
     if (!(x[f] == y[f])) return false;
   return t == 5 || x[t] != y[t];
+}
+
+// tie(x, y, t) as a test of a pair, for two_contacts.
+auto tied(std::size_t t) {
+  return [t](const CircleDoubles& x, const CircleDoubles& y) { return tie(x, y, t); };
 }
 
 // The boundary each family promises.
@@ -87,24 +92,26 @@ bool has_boundary(Family family, const Circles& w) {
     case Family::random_doubles: return true;
     case Family::tangency: return any_pair(w, tangent);
     case Family::ulp_nudge:
-      return any_pair(w, [](const C5& a, const C5& b) {
+      return any_pair(w, [](const CircleDoubles& a, const CircleDoubles& b) {
         if (tangent(a, b)) return false;
         for (const std::size_t f : {0, 1, 4})
           for (int n = -3; n <= 3; ++n)
             for (const bool first : {true, false}) {
-              C5 x = a, y = b;
+              CircleDoubles x = a, y = b;
               (first ? x : y)[f] = nudged((first ? a : b)[f], n);
               if ((first ? x : y)[4] >= 0 && tangent(x, y)) return true;
             }
         return false;
       });
-    case Family::tie_px: return two_contacts(w, [](const C5& x, const C5& y) { return tie(x, y, 1); });
-    case Family::tie_p: return two_contacts(w, [](const C5& x, const C5& y) { return tie(x, y, 2); });
-    case Family::tie_p_vx: return two_contacts(w, [](const C5& x, const C5& y) { return tie(x, y, 3); });
-    case Family::tie_p_v: return two_contacts(w, [](const C5& x, const C5& y) { return tie(x, y, 4); });
-    case Family::duplicates: return two_contacts(w, [](const C5& x, const C5& y) { return tie(x, y, 5); });
+    case Family::tie_px: return two_contacts(w, tied(1));
+    case Family::tie_p: return two_contacts(w, tied(2));
+    case Family::tie_p_vx: return two_contacts(w, tied(3));
+    case Family::tie_p_v: return two_contacts(w, tied(4));
+    case Family::duplicates: return two_contacts(w, tied(5));
     case Family::incomparable:
-      return two_contacts(w, [](const C5& x, const C5& y) { return !product_leq(x, y) && !product_leq(y, x); });
+      return two_contacts(w, [](const CircleDoubles& x, const CircleDoubles& y) {
+        return !product_leq(x, y) && !product_leq(y, x);
+      });
     case Family::mutual_contacts:
       for (std::size_t a = 0; a < w.size(); ++a)
         for (std::size_t b = a + 1; b < w.size(); ++b)
@@ -119,18 +126,18 @@ bool has_boundary(Family family, const Circles& w) {
       return false;
     }
     case Family::square_overflow:
-      return any_pair(w, [](const C5& a, const C5& b) {
+      return any_pair(w, [](const CircleDoubles& a, const CircleDoubles& b) {
         const Q s = q(a[4]) + q(b[4]);
         return s * s > q(DBL_MAX);
       });
     case Family::subnormals:
-      for (const C5& c : w)
+      for (const CircleDoubles& c : w)
         for (const double x : c)
           if (std::fpclassify(x) == FP_SUBNORMAL) return true;
       return false;
     case Family::cancellation:
       // |p + v/60| <= 2^-40 |p| with p != 0, exactly.
-      for (const C5& c : w)
+      for (const CircleDoubles& c : w)
         for (std::size_t f = 0; f < 2; ++f) {
           const Q sum = q(c[f]) + q(c[f + 2]) / 60, bound = abs(q(c[f])) / Q(spec::Z(1) << 40);
           if (c[f] != 0 && abs(sum) <= bound) return true;
@@ -138,13 +145,13 @@ bool has_boundary(Family family, const Circles& w) {
       return false;
     case Family::signed_zeros: {
       bool plus = false, minus = false;
-      for (const C5& c : w)
+      for (const CircleDoubles& c : w)
         for (const double x : c)
           if (x == 0) (std::signbit(x) ? minus : plus) = true;
       return plus && minus;
     }
     case Family::zero_radius:
-      for (const C5& c : w)
+      for (const CircleDoubles& c : w)
         if (c[4] == 0) return true;
       return false;
     default: break;  // the big families' promises: tests/big_worlds_test.cpp
@@ -160,7 +167,7 @@ TEST(boundary_world, every_world_of_a_family_has_its_boundary) {
       int with = 0;
       for (const Circles& w : worlds) {
         ASSERT_LE(w.size(), 8u);
-        for (const C5& c : w) {
+        for (const CircleDoubles& c : w) {
           for (const double x : c) ASSERT_TRUE(std::isfinite(x));
           ASSERT_GE(c[4], 0);
         }
@@ -240,7 +247,7 @@ TEST(outside_literal_domain, agrees_with_the_literal_oracle) {
   int inside = 0, outside = 0;
   for (const Circles& w : sample(rounded, 2000, 5)) {
     bool finite = true;
-    for (const C5& c : w)
+    for (const CircleDoubles& c : w)
       for (const double x : c) finite = finite && std::isfinite(x);
     if (!finite) continue;
     std::vector<spec::Circle> list;

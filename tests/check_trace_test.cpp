@@ -202,7 +202,7 @@ TEST(check_trace, a_position_changed_by_one_ulp_is_named_by_its_step_circle_and_
   EXPECT_EQ(check.divergence->step, 20u);
   ASSERT_TRUE(check.divergence->difference);
   EXPECT_EQ(check.divergence->difference->circle, 3u);
-  EXPECT_EQ(check.divergence->difference->field, 0);
+  EXPECT_EQ(check.divergence->difference->field, spec::Field::px);
   EXPECT_EQ(check.last_step, 19u);
 }
 

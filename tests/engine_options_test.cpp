@@ -20,7 +20,7 @@
 namespace circles::impl {
 namespace {
 
-using Circles = std::vector<std::array<double, 5>>;
+using spec::Circles;
 
 // Steps an engine that keeps its pair lists and one that builds a list for every step side by side and
 // requires the same bits after every step; returns the step (1-based) at which circle 0 first changed

@@ -39,11 +39,10 @@
 namespace circles::impl {
 namespace {
 
-using Circles = std::vector<std::array<double, 5>>;
+using spec::Circles;
 using circles::testing::thrown;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr const char* kFieldName[] = {"px", "py", "vx", "vy", "r"};
 
 std::string hex(double x) {
   char buf[64];
@@ -95,13 +94,14 @@ struct Check {
     for (std::size_t k = 0; k < got.size() && k < want.size(); ++k) {
       new_velocity += got[k][2] != w[k][2] || got[k][3] != w[k][3];
       for (std::size_t f = 0; f < 5; ++f) {
-        EXPECT_EQ(got[k][f], want[k][f]) << family << ": circle " << k << " field " << kFieldName[f]
-                                         << ": engine " << hex(got[k][f]) << ", oracle " << hex(want[k][f])
-                                         << "\nworld:\n" << show(w);
+        const char* field = spec::name(spec::Field(f));
+        EXPECT_EQ(got[k][f], want[k][f]) << family << ": circle " << k << " field " << field << ": engine "
+                                         << hex(got[k][f]) << ", oracle " << hex(want[k][f]) << "\nworld:\n"
+                                         << show(w);
         EXPECT_EQ(std::bit_cast<std::uint64_t>(got[k][f]), std::bit_cast<std::uint64_t>(reference[k][f]))
-            << family << ": circle " << k << " field " << kFieldName[f] << " differs from the all-pairs engine";
+            << family << ": circle " << k << " field " << field << " differs from the all-pairs engine";
         EXPECT_EQ(std::bit_cast<std::uint64_t>(grid[k][f]), std::bit_cast<std::uint64_t>(reference[k][f]))
-            << family << ": circle " << k << " field " << kFieldName[f] << ": the grid reference differs from the "
+            << family << ": circle " << k << " field " << field << ": the grid reference differs from the "
             << "all-pairs one\nworld:\n" << show(w);
       }
     }
@@ -176,8 +176,8 @@ TEST(engine, takes_the_velocity_of_the_lexicographically_least_contact_with_ties
   Check check("ties");
   for (std::size_t j = 0; j <= 5; ++j) {
     for (const double zero : {0.0, -0.0}) {
-      std::array<double, 5> a{1, 1, 2, 3, 1};
-      std::array<double, 5> b = a;
+      spec::CircleDoubles a{1, 1, 2, 3, 1};
+      spec::CircleDoubles b = a;
       if (j < 5) b[j] += 0.5;
       for (std::size_t f = 0; f < j && f < 4; ++f) {
         a[f] = f % 2 ? zero : -zero;
@@ -192,7 +192,7 @@ TEST(engine, takes_the_velocity_of_the_lexicographically_least_contact_with_ties
 
 TEST(engine, agrees_with_the_rounded_oracle_on_exact_duplicates) {
   Check check("duplicates");
-  const std::array<double, 5> c{1, 2, 3, 4, 5};
+  const spec::CircleDoubles c{1, 2, 3, 4, 5};
   check.world({c, c});
   check.world({c, c, c, {1, 2, 3, 5, 5}, {1, 2, 2, 4, 5}});
   check.world({{0, 0, 0, 0, 0}, {0, 0, 0, 0, 0}, {0, 0, 1, 1, 0}});
@@ -287,7 +287,7 @@ TEST(engine, broad_phase_covers_every_intersecting_pair_in_larger_worlds_over_ma
       for (std::size_t k = 0; k < n; ++k)
         for (std::size_t f = 0; f < 5; ++f)
           ASSERT_EQ(std::bit_cast<std::uint64_t>(got[k][f]), std::bit_cast<std::uint64_t>(want[k][f]))
-              << "circle " << k << " field " << kFieldName[f];
+              << "circle " << k << " field " << spec::name(spec::Field(f));
     }
   }
   std::printf("[ broad phase ] %ld steps of 1500 circles, %ld candidate pairs\n", steps, pairs);
@@ -295,10 +295,10 @@ TEST(engine, broad_phase_covers_every_intersecting_pair_in_larger_worlds_over_ma
 
 // The first position of the oracle's step that rounds to ±infinity, in the engine's reporting order (lowest
 // index, px before py), or nothing.
-std::optional<std::pair<std::size_t, std::string>> first_overflow(const Circles& next) {
+std::optional<std::pair<std::size_t, spec::Field>> first_overflow(const Circles& next) {
   for (std::size_t k = 0; k < next.size(); ++k)
-    for (std::size_t f = 0; f < 2; ++f)
-      if (std::isinf(next[k][f])) return std::pair{k, std::string(kFieldName[f])};
+    for (const spec::Field f : {spec::Field::px, spec::Field::py})
+      if (std::isinf(next[k][static_cast<std::size_t>(f)])) return std::pair{k, f};
   return std::nullopt;
 }
 
@@ -316,7 +316,7 @@ void agrees_or_overflows_like_the_oracle(const Circles& w) {
     RC_ASSERT(overflow.has_value());
     RC_ASSERT(error.step == 1u);
     RC_ASSERT(error.index == overflow->first);
-    RC_ASSERT(std::string(error.field) == overflow->second);
+    RC_ASSERT(error.field == overflow->second);
     RC_ASSERT(e.world().circles() == w);
     return;
   }
@@ -459,7 +459,7 @@ TEST(engine, throws_position_overflow_naming_the_circle_and_leaves_the_world_unc
   const auto own = thrown<PositionOverflow>([&] { e.step(); });
   ASSERT_TRUE(own);
   EXPECT_EQ(own->index, 2u);
-  EXPECT_STREQ(own->field, "py");
+  EXPECT_EQ(own->field, spec::Field::py);
   EXPECT_EQ(own->step, 1u);
   EXPECT_STREQ(own->what(), "step 1, circle 2, field py: the position p + v/60 overflows to infinity");
   EXPECT_EQ(e.world().circles(), w);
@@ -472,7 +472,7 @@ TEST(engine, throws_position_overflow_naming_the_circle_and_leaves_the_world_unc
   const auto first = thrown<PositionOverflow>([&] { DoubleEngine{World{taken}}.step(); });
   ASSERT_TRUE(first);
   EXPECT_EQ(first->index, 1u);
-  EXPECT_STREQ(first->field, "py");
+  EXPECT_EQ(first->field, spec::Field::py);
   EXPECT_THROW(step_all_pairs(World{taken}), PositionOverflow);
   EXPECT_THROW(step_all_pairs(World{taken}), std::overflow_error);
   // At the threshold: DBL_MAX + tie/60 is the midpoint 2^1024(1 − 2^-54), which rounds (to even) to +infinity;
@@ -488,7 +488,7 @@ TEST(engine, throws_position_overflow_naming_the_circle_and_leaves_the_world_unc
   const auto tie_overflows = thrown<PositionOverflow>([&] { DoubleEngine{World{at}}.step(); });
   ASSERT_TRUE(tie_overflows);
   EXPECT_EQ(tie_overflows->index, 1u);
-  EXPECT_STREQ(tie_overflows->field, "px");
+  EXPECT_EQ(tie_overflows->field, spec::Field::px);
 }
 
 TEST(engine, world_refuses_circles_outside_c_naming_index_and_field) {

@@ -34,7 +34,7 @@
 namespace circles::impl {
 namespace {
 
-using Circles = std::vector<std::array<double, 5>>;
+using spec::Circles;
 using circles::testing::thrown;
 using exact::Narrow;
 using exact::NarrowMagnitude;
@@ -48,7 +48,7 @@ using circles::testing::nearest;
 // The first circle and field, in field order up to `last`, whose nearest double is infinite, if any.
 std::optional<std::pair<std::size_t, spec::Field>> first_infinite(const spec::Sequence& w, spec::Field last) {
   for (std::size_t k = 0; k < w.size(); ++k) {
-    const std::array<double, 5> rounded = spec::nearest_doubles(w[k]);
+    const spec::CircleDoubles rounded = spec::nearest_doubles(w[k]);
     for (std::size_t f = 0; f <= static_cast<std::size_t>(last); ++f)
       if (std::isinf(rounded[f])) return std::pair{k, spec::Field(f)};
   }
@@ -85,7 +85,7 @@ void follow(ExactEngine& engine, spec::Sequence w, int steps) {
       } catch (const PositionOverflow& e) {
         RC_ASSERT(e.step == static_cast<std::uint64_t>(t));
         RC_ASSERT(e.index == overflow->first);
-        RC_ASSERT(std::string(e.field) == spec::name(overflow->second));
+        RC_ASSERT(e.field == overflow->second);
       }
       RC_ASSERT(engine.exact() == w);
       RC_ASSERT(engine.steps() == static_cast<std::uint64_t>(t - 1));
@@ -296,7 +296,7 @@ TEST(exact_engine, reports_the_first_position_that_rounds_to_infinity_and_keeps_
   ASSERT_TRUE(e);
   EXPECT_EQ(e->step, 1u);
   EXPECT_EQ(e->index, 1u);
-  EXPECT_STREQ(e->field, "py");
+  EXPECT_EQ(e->field, spec::Field::py);
   EXPECT_STREQ(e->what(), "step 1, circle 1, field py: the position p + v/60 overflows to infinity");
   EXPECT_EQ(engine.steps(), 0u);
   EXPECT_EQ(engine.exact(), exact_of(w));
@@ -403,7 +403,7 @@ void expect_kept_and_met(const Circles& w, std::uint64_t h) {
   ExactEngine engine(World(w), kept(h));
   EXPECT_EQ(engine.candidates(), (std::vector<CandidatePair>{{0, 1}})) << "H = " << h;
   EXPECT_EQ(first_difference(engine, exact_of(w), static_cast<int>(h) + 3), 0) << "H = " << h;
-  const std::array<double, 5> got = engine.world().circles()[0];
+  const spec::CircleDoubles got = engine.world().circles()[0];
   EXPECT_TRUE(got[2] == w[1][2] && got[3] == w[1][3]) << "H = " << h << ": they never met";
 }
 

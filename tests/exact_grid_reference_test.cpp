@@ -30,7 +30,7 @@
 namespace circles::impl {
 namespace {
 
-using Circles = std::vector<std::array<double, 5>>;
+using spec::Circles;
 using circles::testing::thrown;
 using spec::Q;
 using circles::testing::exact_of;
@@ -55,12 +55,12 @@ Followed follow(const spec::Sequence& w0, int steps) {
   for (int t = 1; t <= steps; ++t) {
     f.gridded += exact_grid_side(grid.rounded()).has_value();
     const spec::Sequence next = spec::resolved_step(w);
-    std::optional<std::pair<std::size_t, std::string>> overflow;
+    std::optional<std::pair<std::size_t, spec::Field>> overflow;
     for (std::size_t k = 0; k < next.size() && !overflow; ++k)
       if (std::isinf(spec::nearest_double(next[k].p.x())))
-        overflow = {k, "px"};
+        overflow = {k, spec::Field::px};
       else if (std::isinf(spec::nearest_double(next[k].p.y())))
-        overflow = {k, "py"};
+        overflow = {k, spec::Field::py};
     if (overflow) {
       const auto fault = thrown<PositionOverflow>([&] { grid.step(); });
       EXPECT_TRUE(fault) << "step " << t << ": no PositionOverflow";
@@ -257,7 +257,7 @@ TEST(exact_grid_reference, reports_the_oracles_first_overflow_and_keeps_its_stat
   const auto fault = thrown<PositionOverflow>([&] { grid.step(); });
   ASSERT_TRUE(fault);
   EXPECT_EQ(fault->index, 1u);
-  EXPECT_STREQ(fault->field, "py");
+  EXPECT_EQ(fault->field, spec::Field::py);
   EXPECT_STREQ(fault->what(), "step 1, circle 1, field py: the position p + v/60 overflows to infinity");
 }
 

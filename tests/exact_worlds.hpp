@@ -6,18 +6,15 @@
 #include "spec/circle.hpp"
 #include "spec/oracle.hpp"
 
-#include <array>
-#include <vector>
-
 namespace circles::testing {
 
-inline std::vector<std::array<double, 5>> nearest(const spec::Sequence& w) {
-  std::vector<std::array<double, 5>> out;
+inline spec::Circles nearest(const spec::Sequence& w) {
+  spec::Circles out;
   for (const spec::Circle& c : w) out.push_back(spec::nearest_doubles(c));
   return out;
 }
 
-inline spec::Sequence exact_of(const std::vector<std::array<double, 5>>& w) {
+inline spec::Sequence exact_of(const spec::Circles& w) {
   return spec::from_doubles(w, spec::Radii::non_negative);
 }
 
@@ -26,7 +23,7 @@ inline spec::Sequence exact_of(const std::vector<std::array<double, 5>>& w) {
 // and dx², dy² (0.5184·2^-1074 each) up to 2^-1074, so s² − (dx² + dy²) computes to −2^-1074. Only a filter's
 // absolute term keeps it from calling them disjoint (exact::intersect_approximate's kApproximateAbsolute). Each
 // takes the other's velocity.
-inline std::vector<std::array<double, 5>> underflowing_intersecting_pair() {
+inline spec::Circles underflowing_intersecting_pair() {
   const double v = 0x1p-537;
   return {{0, 0, v, 0, 0.61 * v}, {0.72 * v, 0.72 * v, 0, v, 0.61 * v}};
 }

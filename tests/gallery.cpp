@@ -15,7 +15,7 @@
 namespace circles::testing {
 namespace {
 
-bool touches(const std::array<double, 5>& a, const std::array<double, 5>& b, Mistakes::Contact how) {
+bool touches(const spec::CircleDoubles& a, const spec::CircleDoubles& b, Mistakes::Contact how) {
   switch (how) {
     case Mistakes::Contact::exact: return impl::intersect_exact(a[0], a[1], a[4], b[0], b[1], b[4]);
     case Mistakes::Contact::strict: {

@@ -13,7 +13,7 @@
 
 namespace circles::testing {
 
-using formats::Circles;
+using spec::Circles;
 
 struct Mistakes {
   enum class Contact { exact, strict, hypot, small_grid } contact = Contact::exact;

@@ -29,7 +29,7 @@
 namespace circles::impl {
 namespace {
 
-using Circles = std::vector<std::array<double, 5>>;
+using spec::Circles;
 
 std::string hex(std::uint64_t h) {
   char buf[32];

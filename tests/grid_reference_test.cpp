@@ -22,7 +22,7 @@
 namespace circles::impl {
 namespace {
 
-using Circles = std::vector<std::array<double, 5>>;
+using spec::Circles;
 using circles::testing::thrown;
 
 // step_grid(w) and step_all_pairs(w) give the same bits, or both throw PositionOverflow for the same circle and
@@ -44,7 +44,7 @@ long same_step(const Circles& w) {
   EXPECT_EQ(want.has_value(), got.has_value());
   if (want_fault && got_fault) {
     EXPECT_EQ(got_fault->index, want_fault->index);
-    EXPECT_STREQ(got_fault->field, want_fault->field);
+    EXPECT_EQ(got_fault->field, want_fault->field);
     EXPECT_STREQ(got_fault->what(), want_fault->what());
   }
   if (!want || !got) return 0;
@@ -137,7 +137,7 @@ TEST(grid_reference, reports_the_same_overflow_as_all_pairs_naming_the_first_cir
   const auto fault = thrown<PositionOverflow>([&] { step_grid(World{taken}); });
   ASSERT_TRUE(fault);
   EXPECT_EQ(fault->index, 1u);
-  EXPECT_STREQ(fault->field, "py");
+  EXPECT_EQ(fault->field, spec::Field::py);
   // On the grid's own path (a radius of 2^1000 makes h = 2^1002, so DBL_MAX is 2^22 cells out): 1000 touching
   // circles, and one alone at DBL_MAX that overflows in px by its own velocity.
   Circles w;
@@ -147,7 +147,7 @@ TEST(grid_reference, reports_the_same_overflow_as_all_pairs_naming_the_first_cir
   const auto own = thrown<PositionOverflow>([&] { step_grid(World{w}); });
   ASSERT_TRUE(own);
   EXPECT_EQ(own->index, 1000u);
-  EXPECT_STREQ(own->field, "px");
+  EXPECT_EQ(own->field, spec::Field::px);
   same_step(w);
 }
 

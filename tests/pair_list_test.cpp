@@ -18,7 +18,7 @@
 namespace circles::impl {
 namespace {
 
-using Circles = std::vector<std::array<double, 5>>;
+using spec::Circles;
 using spec::exact;
 using spec::Q;
 
@@ -47,7 +47,7 @@ void expect_listed_and_met(const Circles& w, std::uint64_t h) {
   EXPECT_EQ(first_divergence(w, h, static_cast<int>(h) + 3), 0) << "H = " << h;
   DoubleEngine plain{World{w}, {.threads = 1, .keep_pairs = false}};
   for (std::uint64_t s = 0; s < h + 3; ++s) plain.step();
-  const std::array<double, 5> got = plain.world().circles()[0];
+  const spec::CircleDoubles got = plain.world().circles()[0];
   EXPECT_TRUE(got[2] == w[1][2] && got[3] == w[1][3]) << "H = " << h << ": they never met";
 }
 

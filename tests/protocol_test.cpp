@@ -230,7 +230,7 @@ TEST(protocol, reads_every_number_token_as_the_double_nearest_to_it) {
                                    18446744073709551617, 18446744073709553665], [4783255246441940000, 0, 0, 0, 1]]})",
                                4);
   ASSERT_EQ(line.circles.size(), 2u);
-  EXPECT_EQ(line.circles[0], (std::array<double, 5>{0x1p53, 0x1p53 + 4, -0x1p63, 0x1p64, 0x1p64 + 4096}));
+  EXPECT_EQ(line.circles[0], (spec::CircleDoubles{0x1p53, 0x1p53 + 4, -0x1p63, 0x1p64, 0x1p64 + 4096}));
   EXPECT_EQ(line.circles[1][0], 4.78325524644194e18);
 }
 

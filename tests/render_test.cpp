@@ -196,7 +196,7 @@ TEST(contacts, marks_circles_at_a_distance_of_exactly_the_sum_of_their_radii) {
 RC_GTEST_PROP(contacts, equal_the_exact_test_of_every_pair, ()) {
   const auto coordinate = rc::gen::map(rc::gen::inRange(-20, 21), [](int k) { return k / 2.0; });
   const auto circle = rc::gen::apply(
-      [](double x, double y, double r) { return std::array<double, 5>{x, y, 0, 0, r}; }, coordinate, coordinate,
+      [](double x, double y, double r) { return spec::CircleDoubles{x, y, 0, 0, r}; }, coordinate, coordinate,
       rc::gen::map(rc::gen::inRange(0, 8), [](int k) { return k / 2.0; }));
   const Circles w = *rc::gen::container<Circles>(circle);
   std::vector<unsigned char> want(w.size(), 0);

@@ -28,7 +28,7 @@ using circles::testing::thrown;
 using conform::Options;
 using conform::Outcome;
 using conform::Verdict;
-using formats::Circles;
+using spec::Circles;
 
 using circles::testing::FunctionCandidate;
 

@@ -14,7 +14,7 @@
 namespace circles::testing {
 namespace {
 
-using Circle = std::array<double, 5>;
+using spec::CircleDoubles;
 // For each circle, the circles it tests for contact (directed: circle i finds its own contacts among looks[i]).
 using Looks = std::vector<std::vector<std::size_t>>;
 
@@ -126,7 +126,7 @@ bool precedes(const Circles& w, std::size_t a, std::size_t b) {
 
 // Circle i's image: the velocity of its least contact among looks (the first `slots` contacts in index order,
 // 0: all; the least kept in `bits` bits, 0: in full), then the correctly rounded move.
-Circle image(const Circles& w, std::size_t i, std::vector<std::size_t> looks, const ScaleBugs& bugs) {
+CircleDoubles image(const Circles& w, std::size_t i, std::vector<std::size_t> looks, const ScaleBugs& bugs) {
   std::sort(looks.begin(), looks.end());
   looks.erase(std::unique(looks.begin(), looks.end()), looks.end());
   std::vector<std::size_t> contacts;

@@ -21,7 +21,7 @@
 
 namespace circles::testing {
 
-using formats::Circles;
+using spec::Circles;
 
 struct ScaleBugs {
   enum class Broad { grid, sweep } broad = Broad::grid;

@@ -139,13 +139,16 @@ TEST(step_judge, a_step_that_misses_an_overflow_or_names_another_circle_is_caugh
   const Chain want = rounded_reference(w, 1);
   ASSERT_TRUE(want.overflow.has_value());
   EXPECT_EQ(want.overflow->index, 1u);
-  EXPECT_EQ(want.overflow->field, "px");
+  EXPECT_EQ(want.overflow->field, spec::Field::px);
   EXPECT_EQ(difference(want, engine_chain<impl::DoubleEngine>(w, 1)), std::nullopt);
-  EXPECT_EQ(difference(want, Chain{{}, Overflow{1, Overflow::kUnknown, ""}}), std::nullopt);  // a C step names no circle
+  // A C step names no circle, so its overflow's field is not compared.
+  EXPECT_EQ(difference(want, Chain{{}, Overflow{1, Overflow::kUnknown, spec::Field::py}}), std::nullopt);
   EXPECT_EQ(difference(want, Chain{{w}, std::nullopt}),
             "after 0 steps alike: no overflow, want an overflow at step 1, circle 1 px");
-  EXPECT_EQ(difference(want, Chain{{}, Overflow{1, 0, "px"}}),
+  EXPECT_EQ(difference(want, Chain{{}, Overflow{1, 0, spec::Field::px}}),
             "an overflow at step 1, circle 0 px, want an overflow at step 1, circle 1 px");
+  EXPECT_EQ(difference(want, Chain{{}, Overflow{1, 1, spec::Field::py}}),
+            "an overflow at step 1, circle 1 py, want an overflow at step 1, circle 1 px");
 }
 
 TEST(step_judge, an_exact_chain_with_a_wrong_circle_is_caught_and_named) {

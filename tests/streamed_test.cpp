@@ -25,7 +25,7 @@ using circles::testing::thrown;
 // A piece size that cuts a document of a few circles in many places, and the default.
 constexpr std::size_t kPieces[] = {1, 7, 64, kStreamPiece};
 
-bool same_bits(const std::vector<std::array<double, 5>>& a, const std::vector<std::array<double, 5>>& b) {
+bool same_bits(const Circles& a, const Circles& b) {
   if (a.size() != b.size()) return false;
   for (std::size_t k = 0; k < a.size(); ++k)
     for (std::size_t f = 0; f < 5; ++f)

@@ -77,7 +77,7 @@ Circles doubles(const json& rows) {
 Circles from_hex(const json& rows) {
   Circles w;
   for (const json& row : rows) {
-    std::array<double, 5> c{};
+    spec::CircleDoubles c{};
     for (std::size_t j = 0; j < 5; ++j) c[j] = std::strtod(row[j].get<std::string>().c_str(), nullptr);
     w.push_back(c);
   }

@@ -22,7 +22,7 @@
 namespace circles::properties::gen {
 namespace {
 
-using Circle = std::array<double, 5>;
+using spec::CircleDoubles;
 using I = std::int64_t;
 
 // The case's random stream.
@@ -50,7 +50,7 @@ class Draw {
 class Builder {
  public:
   explicit Builder(Draw& draw) : draw_(draw), offset_(static_cast<double>(draw.between(-64, 64))) {}
-  Circle circle(double x, double y, double r) {
+  CircleDoubles circle(double x, double y, double r) {
     const double vy = offset_ + static_cast<double>(made_++ % 4095) / 8 - 256;
     return {x, y, draw_.velocity(), vy, r};
   }
@@ -90,7 +90,7 @@ Circles random_world(std::size_t n, Draw& draw) {
   for (std::size_t k = 0; k < n; ++k) {
     const double r = static_cast<double>(draw.between(2, 4)) / 2;
     if (k + 3 >= n && k > 0) {
-      const Circle& a = w[draw.below(k)];
+      const CircleDoubles& a = w[draw.below(k)];
       w.push_back(make.circle(a[0] + a[4] + r, a[1], r));
       continue;
     }
@@ -142,7 +142,7 @@ Circles crowds(std::uint64_t round, std::size_t max, Draw& draw) {
     const std::size_t rank = h == 0 ? 8 : h == 1 ? m - 1 : h == 2 ? 0 : static_cast<std::size_t>(draw.below(m));
     rest.insert(rest.begin() + static_cast<std::ptrdiff_t>(rank), contacts.front());
     // The hub anywhere among its contacts.
-    const Circle hub = make.circle(cx, cy, static_cast<double>(k + 1));
+    const CircleDoubles hub = make.circle(cx, cy, static_cast<double>(k + 1));
     rest.insert(rest.begin() + static_cast<std::ptrdiff_t>(draw.below(m + 1)), hub);
     blocks.push_back(std::move(rest));
   }
@@ -196,7 +196,7 @@ Circles radius_spread(std::uint64_t round, std::size_t max, Draw& draw) {
     w.push_back(make.circle(static_cast<double>(draw.between(0, side)), static_cast<double>(draw.between(0, side)),
                             std::ldexp(1.0, -static_cast<int>(draw.between(0, 12)))));
   std::vector<double> xs;
-  for (const Circle& c : w) xs.push_back(c[0]);
+  for (const CircleDoubles& c : w) xs.push_back(c[0]);
   std::sort(xs.begin(), xs.end());
   for (std::size_t k = 0; k < big; ++k) {
     const double border = xs[xs.size() * (1 + k % 3) / 4];  // a quartile border of the small circles' x

@@ -19,7 +19,7 @@
 namespace circles::properties::detail {
 namespace {
 
-using Circle = std::array<double, 5>;
+using spec::CircleDoubles;
 using I = std::int64_t;
 enum Field : std::size_t { px, py, vx, vy, r };
 constexpr double inf = std::numeric_limits<double>::infinity();
@@ -76,7 +76,7 @@ double velocity(const Grid& g) {
 }
 
 // A circle at (x, y) units with radius `radius` units and a velocity on the grid's scale.
-Circle at(const Grid& g, I x, I y, I radius) {
+CircleDoubles at(const Grid& g, I x, I y, I radius) {
   const double vx_ = velocity(g);
   const double vy_ = velocity(g);
   return {g.x(x), g.y(y), vx_, vy_, g.length(radius)};
@@ -103,7 +103,7 @@ Triple triple(bool axis) {
 // Two circles exactly tangent: b at (dx, dy) = f·(a, b) scales from a, r_a + r_b = f·c scales split at a
 // random unit (both radii > 0 when `positive`; f = 2 only where one unit could not be split so).
 struct Pair {
-  Circle a, b;
+  CircleDoubles a, b;
   I dx, dy;  // in units
   I f;       // the triple's factor in scales
   Triple t;
@@ -114,8 +114,8 @@ Pair tangent_pair(const Grid& g, bool positive, bool axis = true) {
   const I f = positive && t.c * s < 2 ? 2 : 1;
   const I sum = f * t.c * s;
   const I ra = positive ? pick<I>(1, sum - 1, sum / 2) : pick<I>(0, sum, sum / 2);
-  const Circle a = at(g, 0, 0, ra);
-  const Circle b = at(g, f * t.a * s, f * t.b * s, sum - ra);
+  const CircleDoubles a = at(g, 0, 0, ra);
+  const CircleDoubles b = at(g, f * t.a * s, f * t.b * s, sum - ra);
   return {a, b, f * t.a * s, f * t.b * s, f, t};
 }
 
@@ -126,11 +126,11 @@ double nudged(double x, int n, bool up) {
 
 // One of the six coordinates px, py, r of a or b moved by ±1 … 3 ulps. A radius moves up where down would
 // take it below 0 (or to 0, when `positive`).
-void nudge(Circle& a, Circle& b, bool positive) {
+void nudge(CircleDoubles& a, CircleDoubles& b, bool positive) {
   const int which = pick<int>(0, 5, 0);
   const int n = pick<int>(1, 3, 1);
   bool up = flip();
-  Circle& c = which % 2 == 0 ? a : b;
+  CircleDoubles& c = which % 2 == 0 ? a : b;
   const Field f = which < 2 ? px : which < 4 ? py : r;
   const double down = nudged(c[f], n, false);
   if (f == r && (down < 0 || (positive && down == 0))) up = true;
@@ -156,7 +156,7 @@ double raised(double x, double by, bool strictly) {
 
 // A circle at or above c in every field (the product order (6), (7)): positions up by 0 … 1 scale (by at
 // least one unit in px when `apart`), velocities up by |velocity(g)|, the radius up by 0 … 1 scale.
-Circle above(const Grid& g, const Circle& c, bool apart) {
+CircleDoubles above(const Grid& g, const CircleDoubles& c, bool apart) {
   const I s = g.scale();
   const I up_x = pick<I>(apart ? 1 : 0, s, apart ? 1 : 0);
   const I up_y = pick<I>(0, s, 0);
@@ -169,7 +169,7 @@ Circle above(const Grid& g, const Circle& c, bool apart) {
 
 // Makes a[f] < b[f]: swaps the two if a[f] > b[f], moves b[f] up one ulp if they are equal. Either keeps both
 // at or above anything they were both at or above.
-void below(Circle& a, Circle& b, std::size_t f) {
+void below(CircleDoubles& a, CircleDoubles& b, std::size_t f) {
   if (a[f] > b[f]) std::swap(a[f], b[f]);
   if (a[f] == b[f]) b[f] = std::nextafter(b[f], inf);
 }
@@ -228,8 +228,8 @@ Circles tangent_after_step(bool positive) {
   const I gy = pick(-1024, 1024);
   const I ta = p.f * p.t.a, tb = p.f * p.t.b;
   const I qax = lambda * ta + gx, qay = lambda * tb + gy, qbx = -lambda * ta + gx, qby = -lambda * tb + gy;
-  const Circle a{g.x(-qax), g.y(-qay), g.length(60 * qax), g.length(60 * qay), p.a[r]};
-  const Circle b{g.x(p.dx - qbx), g.y(p.dy - qby), g.length(60 * qbx), g.length(60 * qby), p.b[r]};
+  const CircleDoubles a{g.x(-qax), g.y(-qay), g.length(60 * qax), g.length(60 * qay), p.a[r]};
+  const CircleDoubles b{g.x(p.dx - qbx), g.y(p.dy - qby), g.length(60 * qbx), g.length(60 * qby), p.b[r]};
   return {a, b};  // no bystanders: one that touched either circle in w_0 would turn it away from the tangency
 }
 
@@ -242,8 +242,8 @@ Circles ties(int tie, bool literal) {
   const Grid g = grid(-1000, 1000);
   const I s = g.scale();
   const I rc = pick<I>(8 * s, 12 * s, 8 * s);
-  const Circle c = at(g, 0, 0, rc);
-  Circle x, y;
+  const CircleDoubles c = at(g, 0, 0, rc);
+  CircleDoubles x, y;
   if (!literal) {
     const I x_x = pick<I>(0, 4 * s, 0), x_y = pick<I>(0, 4 * s, 0), x_r = pick<I>(0, 4 * s, s);
     x = at(g, x_x, x_y, x_r);
@@ -253,7 +253,7 @@ Circles ties(int tie, bool literal) {
     if (tie < 5 && y[tie] == x[tie]) y[tie] = std::nextafter(x[tie], inf);  // up: a radius stays >= 0
   } else {
     x = above(g, c, true);
-    const Circle fresh = above(g, x, false);
+    const CircleDoubles fresh = above(g, x, false);
     y = x;
     for (int f = tie; f < 5; ++f) y[f] = f == tie ? raised(x[f], fresh[f] - x[f], true) : fresh[f];
     if (tie < 3 && y[px] == x[px] && y[py] == x[py]) y[r] = raised(x[r], fresh[r] - x[r], true);
@@ -275,19 +275,19 @@ Circles incomparable(bool literal) {
   const I rc = pick<I>(8 * s, 12 * s, 8 * s);
   Circles w;
   if (!literal) {
-    const Circle c = at(g, 0, 0, rc);
+    const CircleDoubles c = at(g, 0, 0, rc);
     const I x_x = pick<I>(0, 4 * s, 0), x_y = pick<I>(0, 4 * s, 0), x_r = pick<I>(0, 4 * s, s);
-    Circle x = at(g, x_x, x_y, x_r);
+    CircleDoubles x = at(g, x_x, x_y, x_r);
     const I y_x = pick<I>(0, 4 * s, 0), y_y = pick<I>(0, 4 * s, 0), y_r = pick<I>(0, 4 * s, s);
-    Circle y = at(g, y_x, y_y, y_r);
+    CircleDoubles y = at(g, y_x, y_y, y_r);
     below(x, y, static_cast<std::size_t>(f1));
     below(y, x, static_cast<std::size_t>(f2));
     w = {c, x, y};
   } else {
-    const Circle z = at(g, 0, 0, rc);
-    const Circle c = above(g, z, true);
-    Circle x = above(g, c, true);
-    Circle y = above(g, c, true);
+    const CircleDoubles z = at(g, 0, 0, rc);
+    const CircleDoubles c = above(g, z, true);
+    CircleDoubles x = above(g, c, true);
+    CircleDoubles y = above(g, c, true);
     below(x, y, static_cast<std::size_t>(f1));
     below(y, x, static_cast<std::size_t>(f2));
     w = {z, c, x, y};
@@ -334,7 +334,7 @@ Circles mutual_contacts(bool literal) {
 Circles cancellation(bool positive) {
   Circles w;
   for (int n = pick<int>(2, 4, 2); n > 0; --n) {
-    Circle c{};
+    CircleDoubles c{};
     const bool same = !w.empty() && flip();
     for (const std::size_t f : {vx, vy}) {
       if (same) {
@@ -365,7 +365,7 @@ Circles signed_zeros(bool positive) {
                                           : weighted_one_of<double>({{1, zero()}, {1, element_of<double>({0.5, 1, 2})}});
   Circles w;
   for (int n = pick<int>(2, 5, 2); n > 0; --n) {
-    Circle c{};
+    CircleDoubles c{};
     for (double& x : c) x = *field;
     c[r] = *radius;
     w.push_back(c);
@@ -383,11 +383,11 @@ Circles zero_radius() {
   const I s = g.scale();
   const Triple t = triple(true);
   Circles w{at(g, 0, 0, t.c * s)};
-  Circle point = at(g, t.a * s, t.b * s, 0);
+  CircleDoubles point = at(g, t.a * s, t.b * s, 0);
   if (flip()) point[r] = -0.0;
   switch (pick<int>(0, 3, 0)) {
     case 1: {
-      Circle other = at(g, t.a * s, t.b * s, 0);
+      CircleDoubles other = at(g, t.a * s, t.b * s, 0);
       w.push_back(other);
       break;
     }
@@ -414,7 +414,7 @@ Circles lattice(bool positive) {
                                       return out;
                                     });
   return *rc::gen::suchThat(rounded, [](const Circles& w) {
-    return std::all_of(w.begin(), w.end(), [](const Circle& c) {
+    return std::all_of(w.begin(), w.end(), [](const CircleDoubles& c) {
       return std::all_of(c.begin(), c.end(), [](double x) { return std::isfinite(x); });
     });
   });
@@ -423,7 +423,7 @@ Circles lattice(bool positive) {
 Circles random_doubles(bool positive) {
   Circles w = *gen::double_world(8, gen::finite_double());
   if (positive)
-    for (Circle& c : w)
+    for (CircleDoubles& c : w)
       if (c[r] == 0) c[r] = std::numeric_limits<double>::denorm_min();
   return w;
 }
