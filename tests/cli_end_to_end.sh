@@ -8,7 +8,8 @@ case_name=$2
 . "$(dirname "$0")/end_to_end_lib.sh"
 
 # Circle 1 moves by exactly 2^1017 per step from DBL_MAX - 3 * 2^1017 (0x1.f3fffffffffffp+1023) at
-# v = 60 * 2^1017 (0x1.ep+1022): it reaches DBL_MAX in w_3, and step 4 overflows (cli_run_test.cpp derives it).
+# v = 60 * 2^1017 (0x1.ep+1022): it reaches DBL_MAX in w_3, and step 4 overflows (tests/step_worlds.hpp derives
+# it).
 overflow_scene='{"circles": [[0, 0, 0, 0, 1], [1.7555597020139802e+308, -5, 8.426686569667106e+307, 0, 1]]}'
 
 case $case_name in
