@@ -1,5 +1,6 @@
-// Worlds the tests of the engine registry, `circles serve` and `circles run` step, and the oracle's worlds of a
-// run from them (tests/registry_test.cpp, tests/serve_test.cpp, tests/cli_run_test.cpp, tests/render_test.cpp).
+// Worlds the tests of the engine registry, candidates, `circles serve` and `circles run` step, and the oracle's
+// worlds of a run from them (tests/registry_test.cpp, tests/candidate_test.cpp, tests/serve_test.cpp,
+// tests/cli_run_test.cpp, tests/render_test.cpp).
 #pragma once
 
 #include "formats/protocol.hpp"
