@@ -1,10 +1,10 @@
 #!/usr/bin/env python3
 """scripts/benchmarks without running a benchmark: its engine section (the engine targets, steady and end to end,
 and the peak-memory target, judged at their bounds, by the names of docs/benchmarks.md's Targets table), the
-configurations it asks for, the filter that selects them, its check that each was measured, its reading of
-`circles run`'s summary line and of /usr/bin/time's report, its plot, and its exits without matplotlib, without
-/usr/bin/time and without the disk space for the peak-memory runs' trace; and, given the benchmark programs,
-that every configuration it asks for is one they register.
+configurations it asks for, the filter that selects them, its check that each was measured, the coverage labels
+of the names, its reading of `circles run`'s summary line and of /usr/bin/time's report, its plot, and its exits
+without matplotlib, without /usr/bin/time and without the disk space for the peak-memory runs' trace; and, given
+the benchmark programs, that every configuration it asks for is one they register.
 
     benchmarks_script_test.py REPOSITORY report
     benchmarks_script_test.py REPOSITORY names ENGINE_BENCH [BOX2D_BENCH]
@@ -337,6 +337,13 @@ def engine_keys(b):
     return b.configurations(b.SIZES)[0]
 
 
+def check_coverage_labels(b):
+    """The coverages in names as bench/harness.hpp's coverage_percent writes them (tests/bench_harness_test.cpp
+    holds it to the same labels): a whole percent, or one decimal."""
+    labels = {c: b.coverage_label(c) for c in (0.1, 1, 1.5, 10, 12.5, 40)}
+    assert labels == {0.1: "0.1", 1: "1", 1.5: "1.5", 10: "10", 12.5: "12.5", 40: "40"}, labels
+
+
 def check_names(b, engine_bench, box2d_bench):
     """Every configuration of a full run and of a quick one is registered (or the run would fail, naming it)."""
     full, quick = b.configurations(b.SIZES), b.configurations(b.QUICK_SIZES)
@@ -355,6 +362,7 @@ def main():
     if mode == "report":
         check_report(b, repository)
         check_readings(b)
+        check_coverage_labels(b)
         check_without_matplotlib(b)
         check_peak_memory_unfit(b)
     elif mode == "names":

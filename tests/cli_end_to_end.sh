@@ -1,17 +1,30 @@
 #!/bin/sh
-# End-to-end checks of `circles serve` and `circles run` (tests/CMakeLists.txt runs one case per test):
-#   cli_end_to_end.sh PATH/TO/circles CASE
-# Each case exits 0 when the program behaves as docs/protocol.md says, and names what differs otherwise.
+# End-to-end checks of the `circles` program: its exit codes, `circles serve` and `circles run`
+# (tests/CMakeLists.txt runs one case per test):
+#   cli_end_to_end.sh PATH/TO/circles SOURCE_DIR CASE
+# Each case exits 0 when the program behaves as docs/protocol.md and docs/run.md say, and names what differs
+# otherwise.
 set -eu
 circles=$1
-case_name=$2
+source_dir=$2
+case_name=$3
 . "$(dirname "$0")/end_to_end_lib.sh"
 
 # Circle 1 moves by exactly 2^1017 per step from DBL_MAX - 3 * 2^1017 (0x1.f3fffffffffffp+1023) at
-# v = 60 * 2^1017 (0x1.ep+1022): it reaches DBL_MAX in w_3, and step 4 overflows (cli_run_test.cpp derives it).
+# v = 60 * 2^1017 (0x1.ep+1022): it reaches DBL_MAX in w_3, and step 4 overflows (tests/step_worlds.hpp derives
+# it).
 overflow_scene='{"circles": [[0, 0, 0, 0, 1], [1.7555597020139802e+308, -5, 8.426686569667106e+307, 0, 1]]}'
 
 case $case_name in
+exits_2_on_a_usage_error)
+  expect_exit 2 sh -c '"$1" --no-such-option 2>/dev/null' sh "$circles"
+  ;;
+exits_2_naming_the_circle_and_field_of_a_bad_scene)
+  printf '{"circles": [[0, 0, 0, 0, 1], [0, 0, 0, 0, -2]]}' >"$dir/scene.json"
+  expect_exit 2 sh -c '"$1" oracle "$2" >/dev/null 2>"$3"' sh "$circles" "$dir/scene.json" "$dir/err"
+  grep -qxF "circles: $dir/scene.json: circle 1, field r: radius -2 is negative (r >= 0, the resolved profile) (not an element of C)" \
+    "$dir/err" || fail "wrong message: $(cat "$dir/err")"
+  ;;
 serve_answers_a_trace_with_its_next_worlds_identically_with_every_engine)
   # w_0 ... w_300 of the default scene as requests (a trace line with "id" for "step"): the responses are
   # w_1 ... w_301, the same bytes from the double engine (2 threads), the exact engine (2 threads; one step
@@ -78,6 +91,42 @@ run_exits_2_on_an_overflow_keeping_the_trace_before_it)
   [ "$(cat "$dir/err")" = "circles run: step 4, circle 1, field px: the position p + v/60 overflows to infinity; stopped after 3 steps, and the trace $dir/t.jsonl holds w_0 to w_3" ] ||
     fail "wrong message: $(cat "$dir/err")"
   [ "$(ls "$dir" | wc -l)" -eq 3 ] || fail "files left behind: $(ls "$dir")"
+  ;;
+run_exits_2_for_an_exact_trace_from_an_engine_that_keeps_only_doubles)
+  mkdir "$dir/out"
+  expect_exit 2 sh -c '"$1" run --steps 1 --exact-trace "$2" >/dev/null 2>"$3"' sh "$circles" "$dir/out/x.jsonl" "$dir/err"
+  grep -qxF 'circles run: --exact-trace: the double engine keeps no exact state (only --engine exact does)' "$dir/err" ||
+    fail "wrong message: $(cat "$dir/err")"
+  [ -z "$(ls "$dir/out")" ] || fail "files left behind: $(ls "$dir/out")"
+  ;;
+run_takes_the_steps_of_the_scene_unless_steps_is_given)
+  "$circles" run "$source_dir/scenes/cradle.json" --threads 1 >"$dir/out"
+  grep -q ': 1200 steps of 12 circles' "$dir/out" || fail "without --steps: $(cat "$dir/out")"
+  "$circles" run "$source_dir/scenes/cradle.json" --steps 7 --threads 1 >"$dir/out"
+  grep -q ': 7 steps of 12 circles' "$dir/out" || fail "with --steps 7: $(cat "$dir/out")"
+  ;;
+run_random_makes_the_benchmarks_scene)
+  # scenes/random.json is impl::random_scene(128, 0.4, 1), written by bench/accuracy_scenes.cpp.
+  "$circles" run --random 128 --coverage 0.4 --seed 1 --steps 0 --trace "$dir/a.jsonl" >"$dir/out"
+  "$circles" run "$source_dir/scenes/random.json" --steps 0 --trace "$dir/b.jsonl" >/dev/null
+  grep -q '^circles run: a random scene of 128 circles (coverage 0.4, seed 1): 0 steps of 128 circles' "$dir/out" ||
+    fail "wrong summary: $(cat "$dir/out")"
+  cmp "$dir/a.jsonl" "$dir/b.jsonl" || fail "the random scene is not scenes/random.json"
+  ;;
+run_random_exits_2_for_a_world_too_large_for_memory)
+  expect_exit 2 sh -c '"$1" run --random 100000000000 >/dev/null 2>"$2"' sh "$circles" "$dir/err"
+  grep -q '^circles: world too large for memory: 100000000000 circles need 25600000000000 bytes, more than the [0-9]* bytes of memory of this machine$' \
+    "$dir/err" || fail "wrong message: $(cat "$dir/err")"
+  ;;
+run_random_and_a_scene_file_exclude_each_other)
+  expect_exit 2 sh -c '"$1" run "$2" --random 5 >/dev/null 2>&1' sh "$circles" "$source_dir/scenes/default.json"
+  ;;
+run_exits_2_when_an_allocation_fails)
+  # 200 MB of address space, and a world that needs about 512 MB: an allocation fails, and the program says so.
+  expect_exit 2 sh -c 'ulimit -v 200000 && exec "$1" run --random 2000000 --steps 1 --threads 1 >/dev/null 2>"$2"' sh \
+    "$circles" "$dir/err"
+  grep -q '^circles: world too large for memory: 2000000 circles need about 512000000 bytes, and an allocation failed$' \
+    "$dir/err" || fail "wrong message: $(cat "$dir/err")"
   ;;
 run_exits_2_leaving_no_file_when_the_trace_cannot_be_written)
   expect_exit 2 sh -c '"$1" run --steps 3 --trace "$2" >/dev/null 2>"$3"' sh "$circles" "$dir/missing/t.jsonl" "$dir/err"

@@ -1,29 +1,23 @@
-// The engine registry, `circles serve`'s line handling and `circles run`'s trace (engines/registry.hpp,
-// conform/serve.hpp, cli/run.hpp), each held to spec::resolved_step_rounded, the correctly rounded oracle step.
-#include "engines/registry.hpp"
-#include "pictures/progress.hpp"
-#include "formats/protocol.hpp"
+// `circles run` in process (cli/run.hpp): its trace and exact trace, held to spec::resolved_step_rounded and to
+// the oracle's exact sequence, what it leaves when a write fails, its summary and stats; and the main job's
+// line of an engine stepped beside the oracle (conform::compare_with_oracle, cli::print_comparison).
 #include "cli/run.hpp"
+#include "engines/registry.hpp"
+#include "formats/protocol.hpp"
 #include "formats/scene.hpp"
 #include "formats/trace_writer.hpp"
-#include "conform/serve.hpp"
 
-#include "properties/generators.hpp"
 #include "spec/oracle.hpp"
+#include "tests/step_worlds.hpp"
 #include "tests/temp_dir.hpp"
 #include "tests/thrown.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
-#include <rapidcheck.h>
-#include <rapidcheck/gtest.h>
 
 #include <sys/resource.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <cfloat>
-#include <cmath>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
@@ -33,26 +27,12 @@
 #include <vector>
 
 namespace circles::cli {
-
-using namespace circles::pictures;
 namespace {
 
+using circles::testing::kOverflowsAtStep4;
+using circles::testing::kTouching;
+using circles::testing::oracle_worlds;
 using circles::testing::thrown;
-
-// Two circles that touch (distance 2 = 1 + 1) and exchange velocities, and one alone.
-const Circles kTouching{{0, 0, 1, 0, 1}, {2, 0, -1, 0, 1}, {10, 10, 0, 60, 0}};
-
-// Circle 1 moves by exactly 2^1017 per step (v = 60 · 2^1017, so v/60 is exact) from DBL_MAX − 3 · 2^1017:
-// w_3 puts it at DBL_MAX exactly, and step 4 would take it to DBL_MAX + 2^1017, beyond the rounding boundary
-// DBL_MAX + 2^970 (half an ulp of DBL_MAX), so to infinity. Every sum before is exact (multiples of 2^971).
-const Circles kOverflowsAtStep4{{0, 0, 0, 0, 1}, {DBL_MAX - 3 * 0x1p1017, -5, 60 * 0x1p1017, 0, 1}};
-
-// w_0, w_1, ..., w_n by the oracle, each step from the previous rounded world.
-std::vector<Circles> oracle_worlds(const Circles& w0, std::size_t n) {
-  std::vector<Circles> worlds{w0};
-  for (std::size_t t = 0; t < n; ++t) worlds.push_back(spec::resolved_step_rounded(worlds.back()));
-  return worlds;
-}
 
 // w_0 … w_n of the oracle's exact sequence, each rounded: what an exact engine (EngineEntry::exact) shows.
 std::vector<Circles> exact_worlds(const Circles& w0, std::size_t n) {
@@ -75,136 +55,6 @@ std::vector<std::string> lines_of(const std::filesystem::path& file) {
 }
 
 using circles::testing::TempDir;
-
-TEST(engines, lists_the_double_engine_the_exact_engine_and_the_oracle) {
-  EXPECT_EQ(engine_names(), "double, exact, oracle");
-  EXPECT_EQ(&engine("double"), find_engine("double"));
-  EXPECT_TRUE(engine("exact").exact);
-  EXPECT_FALSE(engine("double").exact);
-  EXPECT_EQ(find_engine("fast"), nullptr);
-}
-
-TEST(engines, names_the_valid_engines_for_an_unknown_name) {
-  const auto e = thrown<UnknownEngine>([] { engine("fast"); });
-  ASSERT_TRUE(e);
-  EXPECT_STREQ(e->what(), R"(unknown engine "fast" (the engines are: double, exact, oracle))");
-}
-
-TEST(engines, each_steps_like_the_rounded_oracle) {
-  const Circles want = spec::resolved_step_rounded(kTouching);
-  ASSERT_EQ(want[0][2], -1.0) << "the test world must collide";
-  for (const EngineEntry& e : engines::engines())
-    for (const unsigned threads : {0u, 1u, 2u}) EXPECT_EQ(step_once(e, kTouching, threads), want) << e.name;
-}
-
-TEST(engines, each_reports_an_overflow_with_its_step_circle_and_field_and_keeps_the_world) {
-  for (const EngineEntry& e : engines::engines()) {
-    const auto stepper = e.start(kOverflowsAtStep4, 1, 0);
-    for (int t = 0; t < 3; ++t) stepper->step();
-    const Circles w3 = stepper->circles();
-    EXPECT_EQ(w3[1][0], DBL_MAX) << e.name;
-    const auto overflow = thrown<StepOverflow>([&] { stepper->step(); });
-    ASSERT_TRUE(overflow) << e.name;
-    EXPECT_EQ(overflow->step, 4u);
-    EXPECT_EQ(overflow->index, 1u);
-    EXPECT_EQ(overflow->field, spec::Field::px);
-    EXPECT_STREQ(overflow->what(), "step 4, circle 1, field px: the position p + v/60 overflows to infinity");
-    EXPECT_EQ(stepper->steps(), 3u) << e.name;
-    EXPECT_EQ(stepper->circles(), w3) << e.name;
-  }
-}
-
-TEST(serve, answers_a_request_with_the_oracles_step_under_the_same_id) {
-  for (const EngineEntry& e : engines::engines())
-    EXPECT_EQ(answer(e, 0, format_line(kId, 42, kTouching), 1),
-              format_line(kId, 42, spec::resolved_step_rounded(kTouching)));
-}
-
-TEST(serve, names_the_line_id_circle_and_field_of_an_overflow) {
-  const Circles w = oracle_worlds(kOverflowsAtStep4, 3).back();
-  const auto e = thrown<RequestOverflow>([&] { answer(engine("double"), 1, format_line(kId, 9, w), 3); });
-  ASSERT_TRUE(e);
-  EXPECT_STREQ(e->what(), "line 3 (id 9): circle 1, field px: the position p + v/60 overflows to infinity");
-}
-
-TEST(serve, answers_each_line_until_the_end_of_input_and_exits_0) {
-  std::istringstream in(format_line(kId, 1, kTouching) + "\n" + format_line(kId, 2, {}) + "\n" +
-                        format_line(kId, 3, spec::resolved_step_rounded(kTouching)));  // no final newline
-  std::ostringstream out, err;
-  EXPECT_EQ(serve(engine("double"), 1, in, out, err), 0);
-  const auto worlds = oracle_worlds(kTouching, 2);
-  EXPECT_EQ(out.str(), format_line(kId, 1, worlds[1]) + "\n" + format_line(kId, 2, {}) + "\n" +
-                           format_line(kId, 3, worlds[2]) + "\n");
-  EXPECT_EQ(err.str(), "");
-}
-
-TEST(serve, stops_at_a_malformed_request_with_exit_2_after_answering_the_lines_before_it) {
-  std::istringstream in(format_line(kId, 1, kTouching) + "\n{\"id\": 2}\n" + format_line(kId, 3, kTouching) + "\n");
-  std::ostringstream out, err;
-  EXPECT_EQ(serve(engine("double"), 1, in, out, err), 2);
-  EXPECT_EQ(out.str(), format_line(kId, 1, spec::resolved_step_rounded(kTouching)) + "\n");
-  EXPECT_EQ(err.str(), "circles serve: malformed request, line 2: missing key \"circles\"\n");
-}
-
-TEST(serve, stops_at_an_overflow_with_exit_2) {
-  std::istringstream in(format_line(kId, 5, oracle_worlds(kOverflowsAtStep4, 3).back()) + "\n");
-  std::ostringstream out, err;
-  EXPECT_EQ(serve(engine("oracle"), 1, in, out, err), 2);
-  EXPECT_EQ(out.str(), "");
-  EXPECT_EQ(err.str(),
-            "circles serve: line 1 (id 5): circle 1, field px: the position p + v/60 overflows to infinity; the step "
-            "of this request has no finite image in doubles, so there is no response to write\n");
-}
-
-// serve's per-line function against the oracle, on a world of doubles: the same circles by value, or the
-// overflow of the oracle's first infinite position (circles in order, px before py).
-void answers_like_the_oracle(const Circles& w) {
-  const Circles want = spec::resolved_step_rounded(w);
-  std::optional<std::pair<std::size_t, spec::Field>> first_infinite;
-  for (std::size_t k = 0; k < want.size() && !first_infinite; ++k)
-    for (const spec::Field f : {spec::Field::px, spec::Field::py})
-      if (!first_infinite && std::isinf(want[k][static_cast<std::size_t>(f)])) first_infinite.emplace(k, f);
-  const std::string request = format_line(kId, 1, w);
-  if (first_infinite) {
-    RC_TAG("overflow");
-    try {
-      answer(engine("double"), 1, request, 1);
-      RC_FAIL("no overflow reported");
-    } catch (const RequestOverflow& e) {
-      RC_ASSERT(e.index == first_infinite->first);
-      RC_ASSERT(e.field == first_infinite->second);
-    }
-    return;
-  }
-  const Line response = parse_line(answer(engine("double"), 1, request, 1), 1);
-  RC_ASSERT(response.number == 1u);
-  RC_ASSERT(response.circles == want);  // std::array<double> == compares by value: -0 == +0
-  bool contact = false;
-  for (std::size_t k = 0; k < w.size(); ++k) contact = contact || want[k][2] != w[k][2] || want[k][3] != w[k][3];
-  RC_TAG(contact ? "a circle took a new velocity" : "no contact");
-}
-
-RC_GTEST_PROP(serve, answers_like_the_oracle_on_every_world_the_property_suite_generates, ()) {
-  Circles w;
-  for (const spec::Circle& c : *properties::gen::world(spec::Radii::non_negative, 12))
-    w.push_back(spec::nearest_doubles(c));
-  // A rational beyond DBL_MAX rounds to infinity, which no request can carry: writing it is refused.
-  for (const auto& c : w)
-    for (const double x : c)
-      if (!std::isfinite(x)) {
-        RC_TAG("a coordinate beyond the double range");
-        RC_ASSERT_THROWS_AS(format_line(kId, 1, w), std::domain_error);
-        return;
-      }
-  answers_like_the_oracle(w);
-}
-
-// Fields from the suite's finite_double, and one in three ±DBL_MAX, so that positions overflow often.
-RC_GTEST_PROP(serve, answers_like_the_oracle_or_reports_its_overflow_on_arbitrary_finite_doubles, ()) {
-  const auto field = rc::gen::oneOf(properties::gen::finite_double(), properties::gen::finite_double(),
-                                    rc::gen::element(DBL_MAX, -DBL_MAX));
-  answers_like_the_oracle(*properties::gen::double_world(5, field));
-}
 
 TEST(run, writes_a_trace_of_every_world_equal_to_the_oracles) {
   for (const EngineEntry& e : engines::engines()) {
@@ -487,76 +337,6 @@ TEST(run, refuses_a_frame_every_0_steps) {
   RunOptions options{3, &engine("double"), 1, ""};
   options.every = 0;
   EXPECT_THROW(run(kTouching, options), std::invalid_argument);
-}
-
-// The progress bar, driven by given times: t(s) is s seconds after the start.
-Progress::Clock::time_point t(double seconds) {
-  return Progress::Clock::time_point{} +
-         std::chrono::duration_cast<Progress::Clock::duration>(std::chrono::duration<double>(seconds));
-}
-
-TEST(progress, stays_quiet_for_a_run_that_ends_within_half_a_second_and_is_not_estimated_at_a_second) {
-  std::ostringstream out;
-  {
-    Progress p(&out, 1000, 1, t(0));
-    p.update(0, 10, t(0.01));
-    p.update(0, 500, t(0.25));  // estimate 0.5 s
-    p.update(0, 990, t(0.49));
-    EXPECT_FALSE(p.shown());
-  }
-  EXPECT_EQ(out.str(), "");
-}
-
-TEST(progress, appears_after_half_a_second_whatever_the_estimate) {
-  std::ostringstream out;
-  Progress p(&out, 1000, 1, t(0));
-  p.update(0, 990, t(0.51));
-  EXPECT_TRUE(p.shown());
-  EXPECT_EQ(out.str(), "\r[###################.]  99%  step 990 of 1000  0.0 s left");
-}
-
-// 100 of 1000 steps in 0.25 s: 2.25 s to go at that rate, so the bar comes at once.
-TEST(progress, appears_from_a_fifth_of_a_second_on_when_the_run_is_estimated_at_a_second_or_more) {
-  std::ostringstream out;
-  Progress p(&out, 1000, 1, t(0));
-  p.update(0, 1, t(0.19));
-  EXPECT_FALSE(p.shown());
-  p.update(0, 100, t(0.25));
-  EXPECT_TRUE(p.shown());
-  EXPECT_EQ(out.str(), "\r[##..................]  10%  step 100 of 1000  2.2 s left");
-}
-
-// With --fit: the first pass ends at its last update (0.65 s); the second's first 10 steps take 0.06 s, so its
-// 990 others are estimated at 5.94 s.
-TEST(progress, redraws_at_most_every_tenth_of_a_second_each_pass_with_its_own_bar_and_erases_its_line_at_the_end) {
-  std::ostringstream out;
-  Progress p(&out, 1000, 2, t(0));
-  p.update(0, 100, t(0.6));
-  const std::string first = out.str();
-  EXPECT_EQ(first, "\r[##..................]  10%  step 100 of 1000 (fit pass)  5.4 s left");
-  p.update(0, 200, t(0.65));
-  EXPECT_EQ(out.str(), first) << "redrawn within 0.1 s";
-  p.update(1, 10, t(0.71));
-  const std::string second = "[....................]   1%  step 10 of 1000 (run)  5.9 s left";
-  EXPECT_EQ(out.str(), first + "\r" + second + std::string(first.size() - 1 - second.size(), ' '));
-  p.finish();
-  EXPECT_FALSE(p.shown());
-  const std::string blank = "\r" + std::string(first.size() - 1, ' ') + "\r";
-  EXPECT_TRUE(out.str().ends_with(blank)) << out.str();
-}
-
-TEST(progress, is_silent_without_a_terminal) {
-  Progress p(nullptr, 1000, 1, t(0));
-  p.update(0, 1, t(5));
-  EXPECT_FALSE(p.shown());
-}
-
-TEST(progress, draws_a_bar_of_twenty_with_the_percentage_step_pass_and_time_left) {
-  EXPECT_EQ(progress_line(0, 1, 500, 1000, 1.5), "[##########..........]  50%  step 500 of 1000  1.5 s left");
-  EXPECT_EQ(progress_line(0, 2, 500, 1000, 1.5),
-            "[##########..........]  50%  step 500 of 1000 (fit pass)  1.5 s left");
-  EXPECT_EQ(progress_line(1, 2, 1000, 1000, 0), "[####################] 100%  step 1000 of 1000 (run)  0.0 s left");
-  EXPECT_EQ(progress_line(0, 1, 0, 7, INFINITY), "[....................]   0%  step 0 of 7");
 }
 
 TEST(compare_with_oracle, finds_the_double_engine_in_agreement_on_the_default_scene) {

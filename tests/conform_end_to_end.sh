@@ -1,12 +1,14 @@
 #!/bin/sh
-# End-to-end checks of `circles conform`'s profiles, corpus and pictures (tests/CMakeLists.txt runs one case per
-# test):
-#   conform_end_to_end.sh PATH/TO/circles SOURCE_DIR CASE
-# Each case exits 0 when the program behaves as docs/conform.md says, and names what differs otherwise.
+# End-to-end checks of `circles conform`: the example candidates in Python and JavaScript, the gallery of wrong
+# implementations, profiles, the corpus and pictures (tests/CMakeLists.txt runs one case per test):
+#   conform_end_to_end.sh PATH/TO/circles SOURCE_DIR CASE [ARGS...]
+# Each case exits 0 when the program behaves as docs/conform.md says, and names what differs otherwise. The
+# gallery's cases take the path of tests/gallery_candidate.cpp's program, and an entry's name, as ARGS.
 set -eu
 circles=$1
 source_dir=$2
 case_name=$3
+shift 3
 . "$(dirname "$0")/end_to_end_lib.sh"
 
 # run_conform WANT ARGS...: runs `circles conform ARGS`, stdout to $dir/out, stderr to $dir/err; it must exit
@@ -24,6 +26,32 @@ run_conform() {
 naive="python3 $source_dir/examples/python/step_naive.py"
 
 case $case_name in
+refuses_the_naive_python_example_with_exit_1)
+  run_conform 1 --cases 500 --seed 1 --exec "$naive"
+  ;;
+refuses_the_float32_python_example_with_exit_1_on_every_seed)
+  # Positions stored in float32, written by Python's json (Infinity and NaN where float32 overflows): a wrong
+  # value, so exit 1 with a counterexample on every seed, never exit 2 for a malformed line or a mismatched id.
+  for seed in 1 2 3 4 5 6; do
+    run_conform 1 --seed "$seed" --exec "python3 $source_dir/examples/python/step_float32.py"
+  done
+  ;;
+refuses_the_naive_node_example_with_exit_1)
+  run_conform 1 --seed 3 --exec "node $source_dir/examples/node/step_naive.js"
+  ;;
+exits_2_for_a_program_that_hangs)
+  run_conform 2 --cases 5 --timeout 0.2 --exec 'sleep 30'
+  ;;
+rejects_a_gallery_entry_with_exit_1)
+  # ARGS: GALLERY_CANDIDATE ENTRY. Default options (a random seed, printed in the report).
+  run_conform 1 --exec "$1 $2"
+  ;;
+gallery_candidate_exits_2_listing_the_entries_for_an_unknown_name)
+  # ARGS: GALLERY_CANDIDATE.
+  expect_exit 2 sh -c '"$1" no-such-mistake </dev/null >"$2" 2>&1' sh "$1" "$dir/out"
+  grep -qx 'gallery_candidate: no gallery entry is called "no-such-mistake"; the entries are: none, strict-intersect, .*, flush-subnormals; optimized, contact-slots, .*, kept-pairs' \
+    "$dir/out" || fail "wrong message: $(cat "$dir/out")"
+  ;;
 literal_profile_accepts_the_exact_python_example)
   run_conform 0 --profile literal --cases 300 --seed 1 --exec "python3 $source_dir/examples/python/step.py"
   grep -q "conforms: 300 cases" "$dir/out" || fail "no verdict: $(cat "$dir/out")"

@@ -1,7 +1,7 @@
 // `circles conform` in process: the comparison and its levels, the verdicts on right and wrong candidates, the
-// shrunk counterexample, rounds of every family and shards, the literal profile, counterexamples saved and
-// replayed (conform/corpus.hpp) and drawn (pictures/counterexample_svg.hpp), and candidate programs that crash, hang, or
-// answer out of protocol.
+// shrunk counterexample, rounds of every family and shards, the literal profile, counterexamples saved with
+// --save and replayed first, and the verdicts on programs that answer NaN or break off inside a batch. The
+// candidates themselves are tests/candidate_test.cpp's, the corpus files tests/corpus_test.cpp's.
 #include "conform/candidate.hpp"
 #include "conform/conform.hpp"
 #include "conform/corpus.hpp"
@@ -107,7 +107,7 @@ std::string describe(const Verdict& v) {
   if (v.counterexample) {
     const Counterexample& c = *v.counterexample;
     text += ": family " + c.family + ", step " + std::to_string(c.step) + " of " + std::to_string(c.steps) +
-            ", circle " + std::to_string(c.difference.circle) + ", field " + spec::name(c.difference.field) +
+            ", circle " + std::to_string(c.difference.circle) + ", field " + properties::field_name(c.difference.field) +
             ", " + c.difference.decision + ", replay " + c.replay;
   }
   return text;
@@ -173,15 +173,15 @@ TEST(conform, judges_nan_and_infinities_in_every_field_as_differences_at_every_l
   const Circles in{{0, 0, 1, 0, 1}, {1, 0, 2, 0, 1}};
   const Circles expected = spec::resolved_step_rounded(in);
   for (const double odd : {double{NAN}, -double{NAN}, double{INFINITY}, -double{INFINITY}})
-    for (std::size_t field = 0; field < 5; ++field)
+    for (int field = 0; field < 5; ++field)
       for (const std::uint64_t ulps : {std::uint64_t{0}, std::uint64_t{1}, std::numeric_limits<std::uint64_t>::max()}) {
         Circles answer = expected;
-        answer[1][field] = odd;
+        answer[1][static_cast<std::size_t>(field)] = odd;
         const auto d = compare(in, expected, answer, Level{ulps});
         ASSERT_TRUE(d) << odd << " in field " << field << " at ulps " << ulps;
         EXPECT_EQ(d->circle, 1u);
-        EXPECT_EQ(d->field, spec::Field(field));
-        EXPECT_EQ(d->expected, expected[1][field]);
+        EXPECT_EQ(d->field, field);
+        EXPECT_EQ(d->expected, expected[1][static_cast<std::size_t>(field)]);
         EXPECT_EQ(std::bit_cast<std::uint64_t>(d->actual), std::bit_cast<std::uint64_t>(odd));
       }
 }
@@ -210,7 +210,7 @@ TEST(conform, names_a_changed_radius_as_no_decision_rather_than_a_wrong_position
     answer[0][4] = r;
     const auto d = compare(in, expected, answer, Level{0});
     ASSERT_TRUE(d) << r;
-    EXPECT_EQ(d->field, spec::Field::r);
+    EXPECT_EQ(properties::field_name(d->field), std::string("r"));
     EXPECT_EQ(d->decision, "none: the position and velocity are right, but the radius changed, which no step does");
   }
 }
@@ -458,97 +458,6 @@ TEST(conform, saves_a_counterexample_and_replays_it_first_on_every_run) {
   EXPECT_EQ(third.replayed, 1u);
 }
 
-TEST(conform, round_trips_a_counterexample_through_its_file_bit_for_bit) {
-  const double tiny = std::numeric_limits<double>::denorm_min();
-  StoredCounterexample c;
-  c.profile = Profile::literal;
-  c.world = {{-0.0, 0.1, 1e300, -tiny, 2.5}, {1.0 / 3, -2, 0, 60, tiny}};
-  c.level = "ulps:3";
-  c.family = "subnormals";
-  c.candidate = "the program `a \"quoted\" name`";
-  c.seed = 18446744073709551615u;
-  c.case_index = 12;
-  c.steps = 4;
-  c.step = 2;
-  c.expected = c.world;
-  c.actual = {{0, 0, 0, 0, 0}, {1, 1, 1, 1, 1}};
-  c.difference = Difference{1, spec::Field::r, tiny, -0.0, "none: \"quoted\""};
-  const StoredCounterexample back = from_json(to_json(c), "x.json");
-  EXPECT_EQ(back.profile, c.profile);
-  ASSERT_EQ(back.world.size(), 2u);
-  for (std::size_t k = 0; k < 2; ++k)
-    for (std::size_t f = 0; f < 5; ++f)
-      EXPECT_EQ(std::bit_cast<std::uint64_t>(back.world[k][f]), std::bit_cast<std::uint64_t>(c.world[k][f]));
-  EXPECT_EQ(back.level, c.level);
-  EXPECT_EQ(back.family, c.family);
-  EXPECT_EQ(back.candidate, c.candidate);
-  EXPECT_EQ(back.seed, c.seed);
-  EXPECT_EQ(back.case_index, c.case_index);
-  EXPECT_EQ(back.steps, c.steps);
-  EXPECT_EQ(back.step, c.step);
-  EXPECT_EQ(back.actual, c.actual);
-  ASSERT_TRUE(back.difference);
-  EXPECT_EQ(back.difference->field, spec::Field::r);
-  EXPECT_TRUE(std::signbit(back.difference->actual));
-  EXPECT_EQ(back.difference->decision, c.difference->decision);
-  // Equal worlds in one profile are one file; the other profile is another.
-  StoredCounterexample other = c;
-  other.seed = 1;
-  EXPECT_EQ(stem(other), stem(c));
-  other.profile = Profile::resolved;
-  EXPECT_NE(stem(other), stem(c));
-  EXPECT_EQ(stem(c).size(), std::string("counterexample-").size() + 16);
-}
-
-TEST(conform, refuses_corpus_files_it_cannot_replay_naming_the_file_and_the_place) {
-  const auto error = [](const std::string& text) {
-    const auto e = thrown<CorpusError>([&] { from_json(text, "F.json"); });
-    return e ? std::string(e->what()) : std::string("nothing thrown");
-  };
-  const std::string head = R"({"format": "circles-counterexample/1", "profile": "resolved", )";
-  EXPECT_EQ(error("{"), "F.json: malformed JSON: [json.exception.parse_error.101] parse error at line 1, column 2: "
-                        "syntax error while parsing object key - unexpected end of input; expected string literal");
-  EXPECT_EQ(error("[]"), "F.json: expected an object {\"format\": ..., \"profile\": ..., \"world\": ...}");
-  EXPECT_EQ(error(R"({"format": "circles-counterexample/1", "world": []})"), "F.json: missing key \"profile\"");
-  EXPECT_EQ(error(R"({"format": "other", "profile": "resolved", "world": []})"),
-            "F.json: key \"format\": expected \"circles-counterexample/1\", found \"other\"");
-  EXPECT_EQ(error(head + R"("world": [], "note": 1})"),
-            "F.json: unknown key \"note\" (a counterexample has the keys format, profile, world, level, seed, case, "
-            "family, steps, step, candidate, expected, actual and difference)");
-  EXPECT_EQ(error(R"({"format": "circles-counterexample/1", "profile": "exact", "world": []})"),
-            "F.json: key \"profile\": expected \"resolved\" or \"literal\", found \"exact\"");
-  EXPECT_EQ(error(head + R"("world": [[0, 0, 0, 0, -2]]})"),
-            "F.json: key \"world\": circle 0, field r: radius -2 is negative (r >= 0, the resolved profile) (not an "
-            "element of C)");
-  EXPECT_EQ(error(head + R"("world": [[0, 0, 0, 0]]})"),
-            "F.json: key \"world\": circle 0: expected 5 numbers [px, py, vx, vy, r]");
-  EXPECT_EQ(error(head + R"("world": [[0, 0, "1", 0, 1]]})"),
-            "F.json: key \"world\": circle 0, field vx: expected a number, found \"1\"");
-  EXPECT_EQ(error(head + R"("world": [[0, 0, 0, 0, 1e999]]})"),
-            "F.json: malformed JSON: [json.exception.out_of_range.406] number overflow parsing '1e999'");
-  // A number means the double nearest to it (formats/json_number.hpp): 2^53 + 1 is 2^53.
-  EXPECT_EQ(from_json(head + R"("world": [[9007199254740993, 0, 0, 0, 1]]})", "F.json").world[0][0], 0x1p53);
-  EXPECT_EQ(error(head + R"("world": [], "seed": -1})"), "F.json: key \"seed\": expected an integer >= 0, found -1");
-  EXPECT_EQ(error(head + R"("world": [], "difference": {"circle": 0, "field": "pz", "expected": 0, "actual": 0, )"
-                         R"("decision": ""}})"),
-            "F.json: key \"difference\": field \"pz\" is not px, py, vx, vy or r");
-
-  // In a directory, the file is named by its path, and a run with --save stops before any case.
-  const TempDir corpus;
-  corpus.write("bad.json", "{");
-  std::uint64_t asked = 0;
-  FunctionCandidate counting([&](const Circles& w) {
-    ++asked;
-    return w;
-  });
-  Options options{{0}, 100, 1, 1, 0, 1, {}};
-  options.save = corpus.path;
-  const Verdict v = check(counting, options);
-  EXPECT_EQ(v.outcome, Outcome::cannot_check);
-  EXPECT_TRUE(v.error.starts_with("--save: " + (corpus.path / "bad.json").string() + ": malformed JSON")) << v.error;
-  EXPECT_EQ(asked, 0u);
-}
-
 TEST(conform, refuses_a_save_directory_it_cannot_use_before_any_case) {
   const TempDir dir;
   dir.write("file", "x");
@@ -566,35 +475,6 @@ TEST(conform, refuses_a_save_directory_it_cannot_use_before_any_case) {
   EXPECT_EQ(asked, 0u);
 }
 
-// Programs that break the protocol: each is refused with what it did, and nothing of it outlives the check.
-TEST(conform, refuses_broken_programs_with_what_they_did) {
-  const Circles w{{0, 0, 1, 0, 1}};
-  const auto broken = [&](const std::string& command) {
-    ProcessCandidate candidate(command, 300ms);
-    const auto e = thrown<BrokenCandidate>([&] { candidate.answer(w, 4); });
-    return e ? std::string(e->what()) : std::string("nothing thrown");
-  };
-  EXPECT_EQ(broken("exit 3"), "the program `exit 3` exited with status 3 before answering request 4");
-  EXPECT_EQ(broken("sleep 30"), "the program `sleep 30` gave no answer to request 4 within 0.3 s (it was stopped)");
-  EXPECT_EQ(broken("read x; echo '{\"id\": 5, \"circles\": [[0, 0, 1, 0, 1]]}'"),
-            "the program `read x; echo '{\"id\": 5, \"circles\": [[0, 0, 1, 0, 1]]}'` answered request 4 with id 5");
-  EXPECT_EQ(broken("read x; echo '{\"id\": 4, \"circles\": []}'"),
-            "the program `read x; echo '{\"id\": 4, \"circles\": []}'` answered request 4 (1 circles) with 0 circles");
-  EXPECT_EQ(broken("read x; echo 'hello'"),
-            "the program `read x; echo 'hello'` wrote a malformed answer to request 4: line 1: malformed JSON at "
-            "column 1: syntax error while parsing value - invalid literal; last read: 'h'");
-  EXPECT_EQ(broken("read x; kill -SEGV $$"), "the program `read x; kill -SEGV $$` was killed by signal 11 before answering request 4");
-  // A correct program that will not exit at the end of its input.
-  ProcessCandidate stubborn("cat >/dev/null; sleep 30", 200ms);
-  const auto e = thrown<BrokenCandidate>([&] { stubborn.finish(); });
-  ASSERT_TRUE(e);
-  EXPECT_EQ(std::string(e->what()),
-            "the program `cat >/dev/null; sleep 30` did not exit within 0.2 s of the end of its input (it was stopped)");
-}
-
-// A program is sent a batch of requests before conform reads their answers: one that answers only after it has
-// read two requests is answered, not waited on until the deadline (which is what asking one request at a time
-// would get: "gave no answer to request 7"). Messages still name the request of the batch they concern.
 // A program that crashes right after its first wrong answer, before answering the rest of its batch: the
 // strict (3) step, with answer_all stopping at the first answer that differs from the resolved step. Conform
 // judges the answers it has before the fault, so the verdict is the counterexample, exit 1, as a case-by-case
@@ -644,7 +524,7 @@ TEST(conform, reads_nan_and_infinity_in_an_answer_as_values_and_reports_a_counte
     const Counterexample& c = *v.counterexample;
     EXPECT_EQ(c.input.size(), 2u) << describe(v);
     EXPECT_EQ(c.difference.circle, 0u);
-    EXPECT_EQ(c.difference.field, spec::Field::px);
+    EXPECT_EQ(properties::field_name(c.difference.field), std::string("px"));
     EXPECT_EQ(c.difference.expected, c.expected[0][0]);
     EXPECT_TRUE(std::isfinite(c.difference.expected));
     EXPECT_EQ(std::isnan(c.difference.actual), token == "NaN");
@@ -698,60 +578,6 @@ TEST(conform, ignores_unknown_keys_in_an_answer) {
   const Verdict v = check_faulty("extra-key");
   EXPECT_EQ(v.outcome, Outcome::conforms) << describe(v);
   EXPECT_EQ(v.cases, 1000u);
-}
-
-TEST(conform, sends_a_program_several_requests_before_reading_their_answers) {
-  const std::vector<Circles> worlds{{}, {{0, 0, 1, 0, 1}}};
-  const auto answers = [&](const std::string& second_answer) -> std::string {
-    ProcessCandidate candidate("read a; read b; echo '{\"id\": 7, \"circles\": []}'; echo '" + second_answer + "'",
-                               300ms);
-    try {
-      return candidate.answer_all(worlds, 7).all() == std::vector<Circles>{{}, {{2, 0, 1, 0, 1}}} ? "answered" : "wrong answers";
-    } catch (const BrokenCandidate& e) {
-      return e.what();
-    }
-  };
-  EXPECT_EQ(answers("{\"id\": 8, \"circles\": [[2, 0, 1, 0, 1]]}"), "answered");
-  EXPECT_EQ(answers("{\"id\": 9, \"circles\": []}"),
-            "the program `read a; read b; echo '{\"id\": 7, \"circles\": []}'; echo '{\"id\": 9, \"circles\": []}'` "
-            "answered request 8 with id 9");
-}
-
-// More requests than a batch's bytes (ProcessCandidate::kBatchBytes) go in several batches, answered in order:
-// `cat` echoes each line as it reads it, so a batch written whole, unbounded, would fill both pipes and hang.
-TEST(conform, splits_requests_into_batches_a_program_echoing_them_answers_in_order) {
-  std::vector<Circles> worlds;
-  for (int k = 0; k < 2000; ++k) worlds.push_back(Circles(1 + k % 8, {k * 0.1, -k * 1e-300, 1.0 / (k + 1), 3.5, 1}));
-  ProcessCandidate cat("exec cat", 10s);
-  const std::vector<Circles> echoed = cat.answer_all(worlds, 1).all();
-  EXPECT_EQ(echoed, worlds);
-  EXPECT_EQ(cat.answer(worlds[5], 2001), worlds[5]);  // ids go on where the batches left them
-  cat.finish();
-}
-
-TEST(conform, leaves_no_process_behind_even_when_the_program_starts_others) {
-  const std::filesystem::path pid_file =
-      std::filesystem::temp_directory_path() / ("circles-conform-" + std::to_string(::getpid()) + ".pid");
-  {
-    // The shell starts sleep in the background (same process group) and then hangs itself.
-    ProcessCandidate candidate("sleep 60 & echo $! > " + pid_file.string() + "; sleep 60", 100ms);
-    EXPECT_TRUE(thrown<BrokenCandidate>([&] { candidate.answer({}, 1); }));
-  }
-  std::ifstream in(pid_file);
-  pid_t child = 0;
-  ASSERT_TRUE(in >> child);
-  std::filesystem::remove(pid_file);
-  // Dead: no such process, or a zombie waiting for its new parent (init or a subreaper such as ctest) to reap
-  // it, state Z in /proc/PID/stat ("pid (comm) S ..."). Give the kill a moment to land.
-  const auto alive = [child] {
-    std::ifstream stat("/proc/" + std::to_string(child) + "/stat");
-    std::string line;
-    if (!std::getline(stat, line)) return false;
-    const auto paren = line.rfind(')');
-    return paren != std::string::npos && paren + 2 < line.size() && line[paren + 2] != 'Z';
-  };
-  for (int tries = 0; tries < 100 && alive(); ++tries) std::this_thread::sleep_for(10ms);
-  EXPECT_FALSE(alive()) << "the background sleep " << child << " outlived the check";
 }
 
 }  // namespace

@@ -1,10 +1,9 @@
-// --keep-going, --families and expectation files, checked as data (conform::Verdict): a status per family, a
-// shrunk counterexample per failing family, and the judgement against a file of known failures
-// (conform/expect.hpp). tests/conform_end_to_end.sh checks the same through the program and the Python examples.
+// --keep-going and --families, checked as data (conform::Verdict): a status per family and a shrunk
+// counterexample per failing family. tests/conform_end_to_end.sh checks the same through the program and the
+// Python examples.
 #include "conform/conform.hpp"
-#include "conform/expect.hpp"
 #include "tests/function_candidate.hpp"
-#include "tests/gallery.hpp"
+#include "tests/naive_step.hpp"
 #include "tests/thrown.hpp"
 
 #include <gtest/gtest.h>
@@ -19,7 +18,11 @@ namespace circles::conform {
 namespace {
 
 using circles::testing::FunctionCandidate;
-using circles::testing::Mistakes;
+using circles::testing::exact_step;
+using circles::testing::keep_going;
+using circles::testing::kNaiveFails;
+using circles::testing::naive_step;
+using circles::testing::with_status;
 
 // The message of the E that run() throws ("" if none).
 template <class E, class F>
@@ -27,39 +30,6 @@ std::string message_of(F&& run) {
   const std::optional<E> e = circles::testing::thrown<E>(run);
   return e ? e->what() : "";
 }
-
-// The naive step of examples/python/step_naive.py: hypot distance and p + v·(1/60).
-Circles naive_step(const Circles& w) {
-  Mistakes m;
-  m.contact = Mistakes::Contact::hypot;
-  m.naive_update = true;
-  return circles::testing::mistaken_step(w, m);
-}
-
-Circles exact_step(const Circles& w) { return circles::testing::mistaken_step(w, Mistakes{}); }
-
-Options keep_going(std::uint64_t seed) {
-  Options o;
-  o.seed = seed;
-  o.keep_going = true;
-  return o;
-}
-
-std::set<std::string> with_status(const Verdict& v, FamilyStatus status) {
-  std::set<std::string> names;
-  for (const FamilyResult& f : v.families)
-    if (f.status == status) names.insert(properties::name(f.family));
-  return names;
-}
-
-// The 22 families the naive step's two mistakes reach in seed 1's 1000 cases: every one but tangent-after-step,
-// signed-zeros and long-rows, on whose worlds there its answers are the nearest doubles.
-const std::set<std::string> kNaiveFails = {"lattice",    "random-doubles", "tangency",        "ulp-nudge",
-                                           "tie-px",     "tie-p",          "tie-p-vx",        "tie-p-v",
-                                           "duplicates", "incomparable",   "mutual-contacts", "square-overflow",
-                                           "subnormals", "cancellation",   "zero-radius",     "sizes",
-                                           "crowds",     "cell-crowds",    "radius-spread",   "index-bits",
-                                           "order-borders", "big-chains"};
 
 TEST(keep_going, fails_exactly_the_families_the_naive_steps_two_mistakes_reach_with_a_counterexample_each) {
   FunctionCandidate naive(naive_step);
@@ -140,63 +110,6 @@ TEST(keep_going, refuses_an_unknown_family_listing_the_known_ones) {
             "random-doubles, tangency, ulp-nudge, tie-px, tie-p, tie-p-vx, tie-p-v, duplicates, incomparable, "
             "mutual-contacts, tangent-after-step, square-overflow, subnormals, cancellation, signed-zeros, "
             "zero-radius, sizes, crowds, cell-crowds, radius-spread, long-rows, index-bits, order-borders, big-chains");
-}
-
-TEST(expectations, refuse_entries_they_cannot_read_naming_the_file_and_line) {
-  const auto error = [](std::string text) {
-    return message_of<ExpectError>([&] { parse_expectations(text, "x.expect", Profile::resolved); });
-  };
-  EXPECT_EQ(error("# ok\nfail rounding\n"), "x.expect:2: the entry names no family: expected FAMILY fail REASON");
-  EXPECT_EQ(error("latice fail why\n"),
-            "x.expect:1: family: unknown family \"latice\"; the families of the resolved profile are lattice, "
-            "random-doubles, tangency, ulp-nudge, tie-px, tie-p, tie-p-vx, tie-p-v, duplicates, incomparable, "
-            "mutual-contacts, tangent-after-step, square-overflow, subnormals, cancellation, signed-zeros, "
-            "zero-radius, sizes, crowds, cell-crowds, radius-spread, long-rows, index-bits, order-borders, big-chains");
-  EXPECT_EQ(error("lattice pass why\n"), "x.expect:1: expected \"fail\" after the family lattice, found \"pass\": FAMILY fail REASON");
-  EXPECT_EQ(error("lattice fail   \n"), "x.expect:1: the entry for lattice gives no reason: FAMILY fail REASON");
-  EXPECT_EQ(error("lattice fail a\n\ntangency fail b\nlattice fail c\n"),
-            "x.expect:4: the family lattice is listed already, on line 1");
-  const Expectations e = parse_expectations("  # c\r\n\ttangency  fail  hypot, twice \r\n", "x", Profile::resolved);
-  ASSERT_EQ(e.entries.size(), 1u);
-  EXPECT_EQ(e.entries[0].reason, "hypot, twice");
-  EXPECT_EQ(e.entries[0].line, 2u);
-}
-
-TEST(expectations, the_file_written_for_the_naive_step_passes_it_and_fails_the_exact_step_with_an_unexpected_pass_each) {
-  FunctionCandidate naive(naive_step), exact(exact_step);
-  Verdict v = check(naive, keep_going(1));
-  const Expectations file = parse_expectations(expectations_text(v), "naive.expect", Profile::resolved);
-  EXPECT_EQ(file.entries.size(), kNaiveFails.size());
-  apply(v, file);
-  EXPECT_EQ(v.outcome, Outcome::conforms);
-  EXPECT_EQ(with_status(v, FamilyStatus::expected_failure), kNaiveFails);
-  EXPECT_FALSE(v.counterexample);
-
-  Verdict right = check(exact, keep_going(1));
-  apply(right, file);
-  EXPECT_EQ(right.outcome, Outcome::does_not_conform);
-  EXPECT_EQ(with_status(right, FamilyStatus::unexpected_pass), kNaiveFails);
-  const std::vector<std::string> lines = unexpected_passes(right, file);
-  ASSERT_EQ(lines.size(), kNaiveFails.size());
-  EXPECT_EQ(lines.front().substr(0, lines.front().find('(')), "lattice: unexpected pass ");
-  EXPECT_TRUE(lines.front().ends_with("cases checked): delete its line, naive.expect:5")) << lines.front();
-}
-
-TEST(expectations, a_failure_the_file_does_not_list_still_fails_the_run) {
-  Mistakes strict;
-  strict.contact = Mistakes::Contact::strict;
-  FunctionCandidate wrong([&](const Circles& w) { return circles::testing::mistaken_step(w, strict); });
-  Verdict v = check(wrong, keep_going(7));
-  const std::set<std::string> failed = with_status(v, FamilyStatus::failed);
-  ASSERT_FALSE(failed.empty());
-  // The file lists every family it fails but one.
-  std::string text;
-  for (auto f = std::next(failed.begin()); f != failed.end(); ++f) text += *f + " fail known\n";
-  apply(v, parse_expectations(text, "partial.expect", Profile::resolved));
-  EXPECT_EQ(v.outcome, Outcome::does_not_conform);
-  EXPECT_EQ(with_status(v, FamilyStatus::failed), std::set<std::string>{*failed.begin()});
-  ASSERT_TRUE(v.counterexample);
-  EXPECT_EQ(v.counterexample->family, *failed.begin());
 }
 
 }  // namespace

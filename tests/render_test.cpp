@@ -5,6 +5,7 @@
 #include "pictures/video.hpp"
 
 #include "impl/predicate.hpp"
+#include "tests/step_worlds.hpp"
 #include "tests/temp_dir.hpp"
 #include "tests/thrown.hpp"
 
@@ -374,9 +375,8 @@ TEST(frames, a_directory_without_write_permission_is_named_and_nothing_is_writte
 
 TEST(frames, after_an_overflow_are_kept_up_to_the_last_finite_world) {
   TempDir dir;
-  // Circle 1 reaches DBL_MAX in w_3 and overflows at step 4 (tests/cli_run_test.cpp derives it).
-  const Circles w{{0, 0, 0, 0, 1}, {1.7976931348623157e308 - 3 * 0x1p1017, -5, 60 * 0x1p1017, 0, 1}};
-  const RunResult result = run(w, pictures(10, 2, dir.path.string()));
+  // Circle 1 reaches DBL_MAX in w_3 and overflows at step 4 (tests/step_worlds.hpp derives it).
+  const RunResult result = run(circles::testing::kOverflowsAtStep4, pictures(10, 2, dir.path.string()));
   EXPECT_EQ(result.steps, 3u);
   ASSERT_TRUE(result.overflow);
   EXPECT_EQ(dir.files(), (std::vector<std::string>{"frame-000000.png", "frame-000002.png"}));

@@ -70,7 +70,7 @@ run_exits_2_for_fit_or_every_without_pictures)
   [ ! -e "$dir/frames" ] || fail "--every 0 made the frames' directory"
   ;;
 run_keeps_the_frames_before_an_overflow)
-  # Circle 1 reaches DBL_MAX in w_3 and overflows at step 4 (tests/cli_end_to_end.sh, cli_run_test.cpp).
+  # Circle 1 reaches DBL_MAX in w_3 and overflows at step 4 (tests/cli_end_to_end.sh, tests/step_worlds.hpp).
   printf '{"circles": [[0, 0, 0, 0, 1], [1.7555597020139802e+308, -5, 8.426686569667106e+307, 0, 1]]}' >"$dir/s.json"
   expect_exit 2 "$circles" run "$dir/s.json" --steps 10 --every 2 --render "$dir/frames" >/dev/null 2>"$dir/err"
   [ "$(cat "$dir/err")" = "circles run: step 4, circle 1, field px: the position p + v/60 overflows to infinity; stopped after 3 steps, and the frames in $dir/frames go to w_2" ] ||

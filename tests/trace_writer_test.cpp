@@ -1,21 +1,15 @@
-// Trace lines written a part at a time (formats/trace_writer.hpp) and the number text they use
-// (json_number::write): the same bytes as a plain std::to_chars rendering and as append_line, for every thread
-// count, and nothing after a failure.
-#include "formats/json_number.hpp"
+// Trace lines written a part at a time (formats/trace_writer.hpp): the same bytes as append_line, for every
+// thread count, and nothing after a failure.
 #include "formats/protocol.hpp"
 #include "formats/trace_writer.hpp"
 
+#include "tests/double_samples.hpp"
 #include "tests/thrown.hpp"
 
 #include <gtest/gtest.h>
 
-#include <bit>
-#include <charconv>
-#include <cfloat>
-#include <cmath>
 #include <cstdint>
 #include <limits>
-#include <random>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -25,60 +19,9 @@ namespace {
 
 using circles::testing::thrown;
 
-// The plain rendering the writer must reproduce: to_chars' shortest round-trip text, then ".0" when that has
-// neither a point nor an exponent.
-std::string plain(double x) {
-  char text[64];
-  const auto end = std::to_chars(text, text + sizeof text, x).ptr;
-  std::string s(text, end);
-  if (s.find('.') == std::string::npos && s.find('e') == std::string::npos) s += ".0";
-  return s;
-}
-
-std::string written_to_buffer(double x) {
-  char text[json_number::kMaxChars];
-  return std::string(text, json_number::write(text, x));
-}
-
-// Doubles of every kind: random bit patterns (every exponent), random values of a trace's magnitudes, and the
-// edges: zeros, subnormals, the extremes, integers on both sides of where to_chars switches to the exponent.
-std::vector<double> doubles(std::size_t random) {
-  std::vector<double> xs = {0.0,  -0.0,  1.0,   -1.0,  0.1,     1e15,     1e16,    1e21, 1e22, 1e23,
-                            123456789012345680000.0, 9007199254740993.0, 0.000001, 1e-7, 5e-324, -5e-324,
-                            DBL_MIN, -DBL_MIN, DBL_MAX, -DBL_MAX, 2.2250738585072009e-308, 100.0, 60.0, 1.0 / 60};
-  std::mt19937_64 rng(15);
-  std::uniform_real_distribution<double> trace(-10000, 10000);
-  for (std::size_t i = 0; i < random; ++i) {
-    const double x = std::bit_cast<double>(rng());
-    if (std::isfinite(x)) xs.push_back(x);
-    xs.push_back(trace(rng));
-    xs.push_back(std::round(trace(rng)) * std::ldexp(1.0, static_cast<int>(rng() % 80)));  // integers
-  }
-  return xs;
-}
-
-TEST(json_number, write_gives_the_bytes_of_a_plain_to_chars_rendering) {
-  for (const double x : doubles(200000)) {
-    ASSERT_EQ(written_to_buffer(x), plain(x)) << json_number::hex(x);
-    ASSERT_LE(written_to_buffer(x).size(), json_number::kMaxChars);
-  }
-  EXPECT_EQ(written_to_buffer(-0.0), "-0.0");
-  EXPECT_EQ(written_to_buffer(1e22), "1e+22");
-  EXPECT_EQ(written_to_buffer(123456789012345680000.0), "123456789012345683968.0");  // fixed form: all its digits
-  EXPECT_EQ(written_to_buffer(-2.2250738585072014e-308), "-2.2250738585072014e-308");
-}
-
-TEST(json_number, append_appends_what_write_writes) {
-  for (const double x : doubles(1000)) {
-    std::string out = "[";
-    json_number::append(out, x);
-    ASSERT_EQ(out, std::string("[").append(plain(x)));
-  }
-}
-
 // n circles of random doubles of all kinds, each finite.
 Circles world(std::size_t n) {
-  const std::vector<double> xs = doubles(n);
+  const std::vector<double> xs = circles::testing::doubles_of_every_kind(n);
   Circles w(n);
   for (std::size_t k = 0; k < n; ++k)
     for (std::size_t j = 0; j < 5; ++j) w[k][j] = xs[(5 * k + j) % xs.size()];
