@@ -107,7 +107,7 @@ std::string describe(const Verdict& v) {
   if (v.counterexample) {
     const Counterexample& c = *v.counterexample;
     text += ": family " + c.family + ", step " + std::to_string(c.step) + " of " + std::to_string(c.steps) +
-            ", circle " + std::to_string(c.difference.circle) + ", field " + properties::field_name(c.difference.field) +
+            ", circle " + std::to_string(c.difference.circle) + ", field " + spec::name(c.difference.field) +
             ", " + c.difference.decision + ", replay " + c.replay;
   }
   return text;
@@ -173,15 +173,15 @@ TEST(conform, judges_nan_and_infinities_in_every_field_as_differences_at_every_l
   const Circles in{{0, 0, 1, 0, 1}, {1, 0, 2, 0, 1}};
   const Circles expected = spec::resolved_step_rounded(in);
   for (const double odd : {double{NAN}, -double{NAN}, double{INFINITY}, -double{INFINITY}})
-    for (int field = 0; field < 5; ++field)
+    for (std::size_t field = 0; field < 5; ++field)
       for (const std::uint64_t ulps : {std::uint64_t{0}, std::uint64_t{1}, std::numeric_limits<std::uint64_t>::max()}) {
         Circles answer = expected;
-        answer[1][static_cast<std::size_t>(field)] = odd;
+        answer[1][field] = odd;
         const auto d = compare(in, expected, answer, Level{ulps});
         ASSERT_TRUE(d) << odd << " in field " << field << " at ulps " << ulps;
         EXPECT_EQ(d->circle, 1u);
-        EXPECT_EQ(d->field, field);
-        EXPECT_EQ(d->expected, expected[1][static_cast<std::size_t>(field)]);
+        EXPECT_EQ(d->field, spec::Field(field));
+        EXPECT_EQ(d->expected, expected[1][field]);
         EXPECT_EQ(std::bit_cast<std::uint64_t>(d->actual), std::bit_cast<std::uint64_t>(odd));
       }
 }
@@ -210,7 +210,7 @@ TEST(conform, names_a_changed_radius_as_no_decision_rather_than_a_wrong_position
     answer[0][4] = r;
     const auto d = compare(in, expected, answer, Level{0});
     ASSERT_TRUE(d) << r;
-    EXPECT_EQ(properties::field_name(d->field), std::string("r"));
+    EXPECT_EQ(d->field, spec::Field::r);
     EXPECT_EQ(d->decision, "none: the position and velocity are right, but the radius changed, which no step does");
   }
 }
@@ -524,7 +524,7 @@ TEST(conform, reads_nan_and_infinity_in_an_answer_as_values_and_reports_a_counte
     const Counterexample& c = *v.counterexample;
     EXPECT_EQ(c.input.size(), 2u) << describe(v);
     EXPECT_EQ(c.difference.circle, 0u);
-    EXPECT_EQ(properties::field_name(c.difference.field), std::string("px"));
+    EXPECT_EQ(c.difference.field, spec::Field::px);
     EXPECT_EQ(c.difference.expected, c.expected[0][0]);
     EXPECT_TRUE(std::isfinite(c.difference.expected));
     EXPECT_EQ(std::isnan(c.difference.actual), token == "NaN");
