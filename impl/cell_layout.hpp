@@ -73,7 +73,7 @@ class CellLayout {
   explicit CellLayout(std::size_t n = 0) {
     resize_buffer(id_, n);
     std::iota(id_.begin(), id_.end(), std::uint32_t{0});
-    resize_buffer(least_, n);
+    reserve_buffer(least_, n);
     least_ = id_;
   }
 

@@ -52,9 +52,9 @@ void CellLayout::arrange(unsigned threads, std::uint64_t horizon, const std::vec
     gather(threads, Columns<CellKey>{next_key_, {&key_}});
   }
   index_levels(key_, level_begin_, levels_);
-  // The sort's and the gathers' scratch (a quarter of the engine's memory at 10^7 circles) is given back
-  // before the list is built, where memory peaks, and taken again at the next rebuild.
-  for (std::vector<std::uint32_t>* scratch : {&permutation_, &scratch_id_}) std::vector<std::uint32_t>().swap(*scratch);
+  // The sort's scratch (the permutation and the old keys, 12 bytes a circle) is given back before the list
+  // is built, where memory peaks, and taken again at the next rebuild; gather() gives back its own.
+  std::vector<std::uint32_t>().swap(permutation_);
   std::vector<CellKey>().swap(next_key_);
 }
 

@@ -280,16 +280,16 @@ class PairList {
   // at 10% coverage a slot's pairs are neighbours in memory and it changes nothing measurable.
   static constexpr std::size_t kPrefetchAhead = 16;
 
-  // Lists every pair {a, b} among those the broad phase offers over `view` (whose radii are the inflated
-  // ones), global slots against every slot, for which first(a, b) ≤ horizon, from that step on (candidates
-  // for which first.near(a, b) is false are not asked: first(a, b) would be kNever). first must be
-  // conservative: no later than the first step of the horizon at which the pair may intersect.
   // Gives the pairs' memory back, keeping each chunk's count, the room the next build makes at once: a
   // rebuild's sort runs between the two, and would otherwise hold the old list beside its own lists (at 10^7
   // circles and 10% coverage, 440 MB of pairs).
   void release() noexcept {
     for (Chunk& chunk : chunks_) std::vector<ListedPair>().swap(chunk.pairs);
   }
+  // Lists every pair {a, b} among those the broad phase offers over `view` (whose radii are the inflated
+  // ones), global slots against every slot, for which first(a, b) ≤ horizon, from that step on (candidates
+  // for which first.near(a, b) is false are not asked: first(a, b) would be kNever). first must be
+  // conservative: no later than the first step of the horizon at which the pair may intersect.
   void build(const CellGrid& grid, const CellView& view, unsigned threads, std::uint64_t horizon,
              const Lister& first);
 
