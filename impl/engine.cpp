@@ -153,8 +153,11 @@ void BasicEngine<A>::advance() {
   const CellLayout::Found found = layout_.found(chunks);
   // Every new velocity first, read from world t (a slot's least contact may be another chunk's slot).
   for_each_chunk(chunks, threads_, [&](std::size_t c) {
-    moves_[c].clear();
-    for (const std::uint32_t t : found.touched[c]) moves_[c].push_back({t, now_.vx[found.least[t]], now_.vy[found.least[t]]});
+    // Room for all at once: a first step's moves would otherwise grow by copies, into memory not yet touched.
+    std::vector<Move>& mine = moves_[c];
+    mine.clear();
+    mine.reserve(found.touched[c].size());
+    for (const std::uint32_t t : found.touched[c]) mine.push_back({t, now_.vx[found.least[t]], now_.vy[found.least[t]]});
   });
   if (!overflow_free_) {
     backup_px_ = now_.px;
