@@ -124,42 +124,91 @@ constexpr auto kBefore = [](const auto& a, const auto& b) {
   return a.key < b.key || (a.key == b.key && a.slot < b.slot);
 };
 
-// Sorts entries that are in ascending slot order by key, stably, so into kBefore's (key, slot) order, in time
-// linear in their number: least significant digit first, kRadixBits bits a pass, each pass starting at the
-// lowest bit above the last pass where two keys differ (the bits all keys share, such as the level's in a
-// one-level scene or most of the band's, cost nothing).
-// kRadixBits = 11: 2^11 four-byte counters (8 KiB) stay in the first-level cache, and the few bit ranges a
-// scene's keys differ in (row, column, band, level: broad_phase.hpp's layout) take three or more passes.
+// The radix sorts' digits. kRadixBits = 11: 2^11 four-byte counters (8 KiB) stay in the first-level cache,
+// and the packed keys (KeyPacking) of a scene take two or three passes.
 // kRadixFrom = 1,024: each pass clears and sums 2^11 counters besides reading the list twice, work that a
 // list of about as many entries does not pay back, so short lists (most of them between rebuilds of one
 // horizon) keep std::sort. A speed choice, not measured at the crossover: both sorts give the same order.
 inline constexpr int kRadixBits = 11;
 inline constexpr std::size_t kRadixFrom = 1024;
+inline constexpr std::uint64_t kDigit = (std::uint64_t{1} << kRadixBits) - 1;
 
+// Keys as the radix sorts below read them: each field of the key (level, band, column, row: broad_phase.hpp)
+// less its least value among the keys sorted, in the fewest bits that hold its range, the fields in their
+// order of significance. Each field is offset by a constant and keeps its order, so packed keys order as the
+// keys do. Sorting by the bits where keys differ instead would take nearly all 54 of them: plan() centres the
+// scene on cell kCells / 2 of each axis (at level 0), so the columns and bands of one scene straddle a power
+// of two, and their XOR has every bit below it set. Packed, the keys of 10^6 circles at 10% coverage take about 24 bits.
+class KeyPacking {
+ public:
+  template <class Keys, class KeyOf>
+  KeyPacking(const Keys& keys, KeyOf key_of) {
+    std::array<std::uint64_t, kFields> low, high;
+    low.fill(std::numeric_limits<std::uint64_t>::max());
+    high.fill(0);
+    for (const auto& e : keys)
+      for (std::size_t f = 0; f < kFields; ++f) {
+        const std::uint64_t v = field(key_of(e), f);
+        low[f] = std::min(low[f], v);
+        high[f] = std::max(high[f], v);
+      }
+    for (std::size_t f = kFields; f-- > 0;) {
+      low_[f] = low[f];
+      at_[f] = bits_;
+      bits_ += high[f] >= low[f] ? static_cast<int>(std::bit_width(high[f] - low[f])) : 0;
+    }
+  }
+  // The key's packed value: below 2^bits().
+  std::uint64_t operator()(CellKey k) const noexcept {
+    std::uint64_t packed = 0;
+    for (std::size_t f = 0; f < kFields; ++f) packed |= (field(k, f) - low_[f]) << at_[f];
+    return packed;
+  }
+  int bits() const noexcept { return bits_; }
+
+ private:
+  // (shift, width) of each field, most significant first: level, band, column, row.
+  static constexpr std::size_t kFields = 4;
+  static constexpr std::array<std::array<int, 2>, kFields> kField = {{
+      {2 * CellGrid::kCellBits, 64 - 2 * CellGrid::kCellBits},
+      {CellGrid::kCellBits + CellGrid::kBandBits, CellGrid::kCellBits - CellGrid::kBandBits},
+      {CellGrid::kBandBits, CellGrid::kCellBits},
+      {0, CellGrid::kBandBits},
+  }};
+  static std::uint64_t field(CellKey k, std::size_t f) noexcept {
+    return (k >> kField[f][0]) & ((std::uint64_t{1} << kField[f][1]) - 1);
+  }
+  std::array<std::uint64_t, kFields> low_{};
+  std::array<int, kFields> at_{};
+  int bits_ = 0;
+};
+
+// One stable pass of an LSD radix sort: `to` gets `from` ordered by the kRadixBits-bit digit(e).
+template <class T, class Digit>
+void radix_pass(std::span<const T> from, std::span<T> to, Digit digit) {
+  constexpr std::size_t kRadix = std::size_t{1} << kRadixBits;
+  std::array<std::uint32_t, kRadix> at{};  // CellOrder::sort takes fewer than 2^32 slots
+  for (const T& e : from) ++at[digit(e)];
+  std::uint32_t sum = 0;
+  for (std::uint32_t& a : at) sum += std::exchange(a, sum);
+  for (const T& e : from) to[at[digit(e)]++] = e;
+}
+
+// Sorts entries that are in ascending slot order by key, stably, so into kBefore's (key, slot) order, in time
+// linear in their number: least significant digit first, kRadixBits bits of the packed keys a pass.
 template <class Entry>
 void sort_slot_ordered(std::span<Entry> list, std::vector<Entry>& scratch) {
   if (list.size() < kRadixFrom) {
     std::sort(list.begin(), list.end(), kBefore);
     return;
   }
-  CellKey differ = 0;
-  for (const Entry& e : list) differ |= e.key ^ list.front().key;
-  if (differ == 0) return;  // one key: slot order is the order
+  const KeyPacking packing(list, [](const Entry& e) { return e.key; });
+  if (packing.bits() == 0) return;  // one key: slot order is the order
   resize_buffer(scratch, list.size());
   std::span<Entry> from = list, to = scratch;
-  constexpr std::size_t kRadix = std::size_t{1} << kRadixBits;
-  std::array<std::uint32_t, kRadix> at;  // CellOrder::sort takes fewer than 2^32 slots
-  for (int shift = std::countr_zero(differ); shift < 64;) {
-    const auto digit = [shift](const Entry& e) { return static_cast<std::size_t>(e.key >> shift) & (kRadix - 1); };
-    at.fill(0);
-    for (const Entry& e : from) ++at[digit(e)];
-    std::uint32_t sum = 0;
-    for (std::uint32_t& a : at) sum += std::exchange(a, sum);
-    for (const Entry& e : from) to[at[digit(e)]++] = e;
+  for (int shift = 0; shift < packing.bits(); shift += kRadixBits) {
+    radix_pass<Entry>(from, to, [&](const Entry& e) { return (packing(e.key) >> shift) & kDigit; });
     std::swap(from, to);
-    shift += kRadixBits;
-    if (shift >= 64 || (differ >> shift) == 0) break;
-    shift += std::countr_zero(differ >> shift);
   }
   if (from.data() != list.data()) std::copy(from.begin(), from.end(), list.begin());
 }
@@ -183,6 +232,28 @@ void repair(std::vector<Entry>& list, std::vector<Entry>& scratch) {
     }
     budget -= a - b;
   }
+}
+
+// The first layout's sort (no previous keys to guide it): the slots by (key, slot) through 8-byte entries,
+// the packed key (KeyPacking) in the upper half and the slot in the lower, half the bytes of an Entry, sorted
+// by the packed bits as sort_slot_ordered sorts Entries; the input is in slot order, so ties stay in slot
+// order. Returns false, with `order` untouched, when the packed keys take more than 32 bits or the keys are
+// fewer than kRadixFrom (the general path sorts those with std::sort).
+bool sort_packed(std::span<const CellKey> keys, std::vector<std::uint32_t>& order) {
+  const std::size_t n = keys.size();
+  if (n < kRadixFrom) return false;
+  const KeyPacking packing(keys, [](CellKey k) { return k; });
+  if (packing.bits() > 32) return false;
+  std::vector<std::uint64_t> from, to;
+  resize_buffer(from, n);
+  for (std::size_t s = 0; s < n; ++s) from[s] = packing(keys[s]) << 32 | s;
+  resize_buffer(to, n);
+  for (int shift = 32; shift < 32 + packing.bits(); shift += kRadixBits) {
+    radix_pass<std::uint64_t>(from, to, [shift](std::uint64_t e) { return (e >> shift) & kDigit; });
+    from.swap(to);
+  }
+  for (std::size_t t = 0; t < n; ++t) order[t] = static_cast<std::uint32_t>(from[t]);
+  return true;
 }
 
 }  // namespace
@@ -279,6 +350,7 @@ bool CellOrder::sort(std::span<const CellKey> keys, std::span<const CellKey> pre
     for (std::size_t s = 0; s < n; ++s) order[s] = static_cast<std::uint32_t>(s);
     return true;
   }
+  if (previous.size() != n && sort_packed(keys, order)) return false;
   // Parts need the previous keys, sorted, as splitters: without them, one chunk does it all.
   const std::size_t chunks = previous.size() == n ? chunk_count(n, threads) : 1;
   chunks_.resize(chunks);

@@ -168,6 +168,9 @@ TEST(broad_phase, the_sort_of_many_unguided_keys_equals_a_plain_sort_whichever_b
       {"bits 0 and 59", {CellKey{1}, CellKey{1} << 59}},
       {"bits 30 to 40", {CellKey{0x7ff} << 30}},
       {"bits 45 and 63", {CellKey{1} << 45, CellKey{1} << 63}},
+      // The first layout packs the differing bits beside the slot when there are at most 32 of them.
+      {"bits 0 to 15 and 40 to 55: 32 bits in two runs", {CellKey{0xffff}, CellKey{0xffff} << 40}},
+      {"bits 0 to 32: 33 bits, too many to pack", {(CellKey{1} << 33) - 1}},
   };
   for (const auto& [name, bits] : masks) {
     std::vector<CellKey> keys(n);
@@ -185,6 +188,16 @@ TEST(broad_phase, the_sort_of_many_unguided_keys_equals_a_plain_sort_whichever_b
   std::vector<std::uint32_t> order;
   CellOrder().sort(keys, {}, order);
   EXPECT_EQ(order, plainly_sorted(keys)) << "the layout";
+  // A planned scene: cells around kCells / 2 on both axes (CellGrid::plan centres it there), so columns and
+  // bands straddle a power of two and differ in every bit below it, on two levels.
+  const std::uint32_t centre = G::kCells / 2;
+  for (CellKey& k : keys) {
+    const unsigned level = static_cast<unsigned>(random() % 2);
+    k = G::pack(level, (centre >> (2 * level)) - 600 + static_cast<std::uint32_t>(random() % 1200),
+                (centre >> (2 * level)) - 600 + static_cast<std::uint32_t>(random() % 1200));
+  }
+  CellOrder().sort(keys, {}, order);
+  EXPECT_EQ(order, plainly_sorted(keys)) << "a planned scene";
 }
 
 TEST(broad_phase, the_guided_re_sort_equals_a_plain_sort_when_every_slot_changes_column_within_its_band) {
