@@ -197,14 +197,14 @@ void radix_pass(std::span<const T> from, std::span<T> to, Digit digit) {
 // Sorts entries that are in ascending slot order by key, stably, so into kBefore's (key, slot) order, in time
 // linear in their number: least significant digit first, kRadixBits bits of the packed keys a pass.
 template <class Entry>
-void sort_slot_ordered(std::span<Entry> list, std::vector<Entry>& scratch) {
+void sort_slot_ordered(std::span<Entry> list, Buffer<Entry>& scratch) {
   if (list.size() < kRadixFrom) {
     std::sort(list.begin(), list.end(), kBefore);
     return;
   }
   const KeyPacking packing(list, [](const Entry& e) { return e.key; });
   if (packing.bits() == 0) return;  // one key: slot order is the order
-  resize_buffer(scratch, list.size());
+  scratch.resize(list.size());
   std::span<Entry> from = list, to = scratch;
   for (int shift = 0; shift < packing.bits(); shift += kRadixBits) {
     radix_pass<Entry>(from, to, [&](const Entry& e) { return (packing(e.key) >> shift) & kDigit; });
@@ -217,7 +217,7 @@ void sort_slot_ordered(std::span<Entry> list, std::vector<Entry>& scratch) {
 // last insertion's moves, fewer than the list's size): once it is spent, the front [0, a] is sorted and the
 // rest is still in slot order, so sort_slot_ordered sorts the rest and one merge joins the two.
 template <class Entry>
-void repair(std::vector<Entry>& list, std::vector<Entry>& scratch) {
+void repair(Buffer<Entry>& list, Buffer<Entry>& scratch) {
   std::size_t budget = 8 * list.size() + 64;
   for (std::size_t a = 1; a < list.size(); ++a) {
     const Entry e = list[a];
@@ -239,15 +239,15 @@ void repair(std::vector<Entry>& list, std::vector<Entry>& scratch) {
 // by the packed bits as sort_slot_ordered sorts Entries; the input is in slot order, so ties stay in slot
 // order. Returns false, with `order` untouched, when the packed keys take more than 32 bits or the keys are
 // fewer than kRadixFrom (the general path sorts those with std::sort).
-bool sort_packed(std::span<const CellKey> keys, std::vector<std::uint32_t>& order) {
+bool sort_packed(std::span<const CellKey> keys, Buffer<std::uint32_t>& order) {
   const std::size_t n = keys.size();
   if (n < kRadixFrom) return false;
   const KeyPacking packing(keys, [](CellKey k) { return k; });
   if (packing.bits() > 32) return false;
-  std::vector<std::uint64_t> from, to;
-  resize_buffer(from, n);
+  Buffer<std::uint64_t> from, to;
+  from.resize(n);
   for (std::size_t s = 0; s < n; ++s) from[s] = packing(keys[s]) << 32 | s;
-  resize_buffer(to, n);
+  to.resize(n);
   for (int shift = 32; shift < 32 + packing.bits(); shift += kRadixBits) {
     radix_pass<std::uint64_t>(from, to, [shift](std::uint64_t e) { return (e >> shift) & kDigit; });
     from.swap(to);
@@ -260,10 +260,10 @@ bool sort_packed(std::span<const CellKey> keys, std::vector<std::uint32_t>& orde
 
 void CellOrder::Chunk::split(std::span<const CellKey> keys, std::span<const CellKey> previous, std::size_t begin,
                              std::size_t end, std::span<const CellKey> splitters, std::size_t part) {
-  for (std::vector<Entry>* list : {&same, &up, &down, &other, &foreign, &incoming}) list->clear();
+  for (Buffer<Entry>* list : {&same, &up, &down, &other, &foreign, &incoming}) list->clear();
   const bool guided = previous.size() == keys.size();
   // Unguided, every slot goes to `other`: room for all of them at once.
-  if (!guided) reserve_buffer(other, end - begin);
+  if (!guided) other.reserve(end - begin);
   // Part c holds the keys k with splitters[c] ≤ k < splitters[c + 1]; the first part has no lower bound and
   // the last no upper one.
   const std::size_t parts = splitters.size() - 1;
@@ -314,17 +314,17 @@ void CellOrder::Chunk::merge_into(std::span<std::uint32_t> out) {
   // a guided sort, `other` in the first layout or after the grid's plan changed), then that list and the
   // longest straight into the order, so no list as long as the chunk is copied again. (key, slot) is a strict
   // total order, so any order of merging gives the same result.
-  std::vector<Entry>* longest = &same;
-  for (std::vector<Entry>* list : {&up, &down, &other, &incoming})
+  Buffer<Entry>* longest = &same;
+  for (Buffer<Entry>* list : {&up, &down, &other, &incoming})
     if (list->size() > longest->size()) longest = list;
   merged.clear();
-  for (std::vector<Entry>* list : {&same, &up, &down, &other, &incoming}) {
+  for (Buffer<Entry>* list : {&same, &up, &down, &other, &incoming}) {
     if (list == longest || list->empty()) continue;
     spare.resize(merged.size() + list->size());
     std::merge(merged.begin(), merged.end(), list->begin(), list->end(), spare.begin(), kBefore);
     merged.swap(spare);
   }
-  const std::vector<Entry>& rest = *longest;
+  const Buffer<Entry>& rest = *longest;
   std::size_t a = 0, b = 0, at = 0;
   while (a < rest.size() && b < merged.size())
     out[at++] = kBefore(merged[b], rest[a]) ? merged[b++].slot : rest[a++].slot;
@@ -334,17 +334,17 @@ void CellOrder::Chunk::merge_into(std::span<std::uint32_t> out) {
   // `other` and its radix scratch: 320 MB at 10^7 circles) is given back, as is `same`'s when it held little
   // (a sort after the grid's plan changed): the steps between rebuilds would otherwise carry it.
   const std::size_t large = out.size() / 4;
-  for (std::vector<Entry>* list : {&up, &down, &other, &incoming, &merged, &spare})
-    if (list->capacity() > large) std::vector<Entry>().swap(*list);
-  if (same.capacity() > large && same.size() < large) std::vector<Entry>().swap(same);
+  for (Buffer<Entry>* list : {&up, &down, &other, &incoming, &merged, &spare})
+    if (list->capacity() > large) Buffer<Entry>().swap(*list);
+  if (same.capacity() > large && same.size() < large) Buffer<Entry>().swap(same);
 }
 
 bool CellOrder::sort(std::span<const CellKey> keys, std::span<const CellKey> previous,
-                     std::vector<std::uint32_t>& order, unsigned threads) {
+                     Buffer<std::uint32_t>& order, unsigned threads) {
   const std::size_t n = keys.size();
   if (n > std::numeric_limits<std::uint32_t>::max())
     throw std::invalid_argument("CellOrder::sort: more than 2^32 - 1 slots");
-  resize_buffer(order, n);
+  order.resize(n);
   // Already sorted (a quiet world, or one whose circles all kept their cells): the identity.
   if (std::is_sorted(keys.begin(), keys.end())) {
     for (std::size_t s = 0; s < n; ++s) order[s] = static_cast<std::uint32_t>(s);

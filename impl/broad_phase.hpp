@@ -35,6 +35,8 @@
 // radix sort, linear too).
 #pragma once
 
+#include "impl/buffers.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -175,7 +177,7 @@ class CellOrder {
   // keys[order[1]] ≤ …. `previous` holds the keys the same slots had when they were last sorted (ascending
   // by slot), or is empty; it only guides the work, never the result. Returns true when `keys` were sorted
   // already (`order` is then the identity).
-  bool sort(std::span<const CellKey> keys, std::span<const CellKey> previous, std::vector<std::uint32_t>& order,
+  bool sort(std::span<const CellKey> keys, std::span<const CellKey> previous, Buffer<std::uint32_t>& order,
             unsigned threads = 1);
 
  private:
@@ -186,7 +188,7 @@ class CellOrder {
   };
   // One chunk's work: its slots split by how far their band moved, each list repaired, then merged.
   struct Chunk {
-    std::vector<Entry> same, up, down, other, foreign, merged, spare, incoming;
+    Buffer<Entry> same, up, down, other, foreign, merged, spare, incoming;
     // Splits slots [begin, end) of keys whose key is in [low, high) (this chunk's part) by how far their band
     // moved since `previous` (guided, or all in `other`); the rest go to `foreign`, marked with their part.
     void split(std::span<const CellKey> keys, std::span<const CellKey> previous, std::size_t begin,

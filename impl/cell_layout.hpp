@@ -52,8 +52,8 @@ struct EngineOptions {
 // with `scratch`, a vector of the same type, as the gather's target (it is swapped with each column).
 template <class T>
 struct Columns {
-  std::vector<T>& scratch;
-  std::initializer_list<std::vector<T>*> columns;
+  Buffer<T>& scratch;
+  std::initializer_list<Buffer<T>*> columns;
 };
 
 // An engine's pair test for one step, as PairList::least_contacts takes it: intersect(a, b), precedes(a, b)
@@ -71,9 +71,9 @@ class CellLayout {
  public:
   // n circles, slot k holding circle k until the first rebuild sorts them; every slot its own least contact.
   explicit CellLayout(std::size_t n = 0) {
-    resize_buffer(id_, n);
+    id_.resize(n);
     std::iota(id_.begin(), id_.end(), std::uint32_t{0});
-    reserve_buffer(least_, n);
+    least_.reserve(n);
     least_ = id_;
   }
 
@@ -83,8 +83,8 @@ class CellLayout {
   // What a step's contacts found, for its move: each slot's least contact (itself if none; the move sets
   // every touched slot's back to itself) and, per chunk of `chunks`, the slots the contacts touched.
   struct Found {
-    std::vector<std::uint32_t>& least;
-    std::vector<std::vector<std::uint32_t>>& touched;
+    Buffer<std::uint32_t>& least;
+    std::vector<Buffer<std::uint32_t>>& touched;
   };
   Found found(std::size_t chunks) {
     touched_.resize(chunks);
@@ -112,14 +112,14 @@ class CellLayout {
   // again when the horizon changed, keys, CellOrder's sort guided by the last keys, and, when the order
   // changed, one gather of the id, the keys and every registered column (x, y and inflated among them).
   template <class... T>
-  void arrange(unsigned threads, std::uint64_t horizon, const std::vector<double>& x, const std::vector<double>& y,
-               const std::vector<double>& inflated, Columns<T>... columns);
+  void arrange(unsigned threads, std::uint64_t horizon, const Buffer<double>& x, const Buffer<double>& y,
+               const Buffer<double>& inflated, Columns<T>... columns);
 
   // After arrange(): the list for the horizon, over the circles at (x, y) with radii `inflated` (as
   // arranged), each pair from its first step by `lister`; then the schedule's bookkeeping for a list built in
   // the step numbered stats.steps.
   void list(EngineStats& stats, const EngineOptions& options, unsigned threads, std::uint64_t horizon,
-            const std::vector<double>& x, const std::vector<double>& y, const std::vector<double>& inflated,
+            const Buffer<double>& x, const Buffer<double>& y, const Buffer<double>& inflated,
             const Lister& lister) {
     const CellView view{key_, x, y, inflated, levels_, level_begin_};
     pairs_.build(grid_, view, threads, horizon, lister);
@@ -141,9 +141,9 @@ class CellLayout {
   template <class T>
   void gather(unsigned threads, const Columns<T>& set);
 
-  std::vector<std::uint32_t> id_, least_, permutation_, scratch_id_;
-  std::vector<std::vector<std::uint32_t>> touched_;
-  std::vector<CellKey> key_, next_key_;  // by the inflated radii of the last rebuild
+  Buffer<std::uint32_t> id_, least_, permutation_, scratch_id_;
+  std::vector<Buffer<std::uint32_t>> touched_;
+  Buffer<CellKey> key_, next_key_;  // by the inflated radii of the last rebuild
   std::vector<unsigned> levels_;          // the levels that hold a circle, ascending, the global level excluded
   std::array<std::size_t, CellGrid::kLevels + 1> level_begin_{};  // level L: [level_begin[L], level_begin[L + 1])
   CellGrid grid_;

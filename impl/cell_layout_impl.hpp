@@ -21,7 +21,7 @@ void CellLayout::step(EngineStats& stats, unsigned threads, Rebuild&& rebuild, M
                                      test.prefetch);
   } else {
     ++stats.quiet_steps;
-    for (std::vector<std::uint32_t>& list : touched_) list.clear();
+    for (Buffer<std::uint32_t>& list : touched_) list.clear();
   }
   move();
   ++stats.steps;
@@ -31,15 +31,15 @@ void CellLayout::step(EngineStats& stats, unsigned threads, Rebuild&& rebuild, M
 }
 
 template <class... T>
-void CellLayout::arrange(unsigned threads, std::uint64_t horizon, const std::vector<double>& x,
-                         const std::vector<double>& y, const std::vector<double>& inflated, Columns<T>... columns) {
+void CellLayout::arrange(unsigned threads, std::uint64_t horizon, const Buffer<double>& x, const Buffer<double>& y,
+                         const Buffer<double>& inflated, Columns<T>... columns) {
   const std::size_t n = id_.size();
   pairs_.release();  // rebuilt by list() after this; memory peaks during the sort below otherwise
   if (horizon != planned_horizon_) {
     grid_.plan(x, y, inflated);
     planned_horizon_ = horizon;
   }
-  resize_buffer(next_key_, n);
+  next_key_.resize(n);
   locate(grid_, threads, x, y, inflated, next_key_);
   if (key_.size() != n) key_.clear();  // the first layout: no previous order to guide the sort
   const bool sorted = order_.sort(next_key_, key_, permutation_, threads);
@@ -47,23 +47,23 @@ void CellLayout::arrange(unsigned threads, std::uint64_t horizon, const std::vec
   if (!sorted) {
     // least_ is the identity between steps, so it stays.
     (gather(threads, columns), ...);
-    resize_buffer(scratch_id_, n);
+    scratch_id_.resize(n);
     gather(threads, Columns<std::uint32_t>{scratch_id_, {&id_}});
     gather(threads, Columns<CellKey>{next_key_, {&key_}});
   }
   index_levels(key_, level_begin_, levels_);
   // The sort's scratch (the permutation and the old keys, 12 bytes a circle) is given back before the list
   // is built, where memory peaks, and taken again at the next rebuild; gather() gives back its own.
-  std::vector<std::uint32_t>().swap(permutation_);
-  std::vector<CellKey>().swap(next_key_);
+  Buffer<std::uint32_t>().swap(permutation_);
+  Buffer<CellKey>().swap(next_key_);
 }
 
 template <class T>
 void CellLayout::gather(unsigned threads, const Columns<T>& set) {
   const std::size_t n = id_.size();
   const std::size_t chunks = chunk_count(n, threads);
-  resize_buffer(set.scratch, n);
-  for (std::vector<T>* column : set.columns) {
+  set.scratch.resize(n);
+  for (Buffer<T>* column : set.columns) {
     for_each_chunk(chunks, threads, [&](std::size_t c) {
       for (std::size_t t = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1); t < e; ++t) {
         if constexpr (std::is_trivially_copyable_v<T>)
@@ -76,7 +76,7 @@ void CellLayout::gather(unsigned threads, const Columns<T>& set) {
   }
   // Plain values are given back with the rest of arrange()'s scratch; values that own memory (GMP integers)
   // stay, each with its allocation, for the next gather.
-  if constexpr (std::is_trivially_copyable_v<T>) std::vector<T>().swap(set.scratch);
+  if constexpr (std::is_trivially_copyable_v<T>) Buffer<T>().swap(set.scratch);
 }
 
 }  // namespace circles::impl

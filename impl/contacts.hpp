@@ -115,7 +115,7 @@ inline void locate(CellGrid& grid, unsigned threads, std::span<const double> px,
 // none yet. Returns true for the first offer (the caller records `to` as touched), false for a later one,
 // which keeps the lesser under precedes.
 template <class Precedes>
-bool offer_least_contact(std::vector<std::uint32_t>& least, std::size_t to, std::size_t from, Precedes&& precedes) {
+bool offer_least_contact(Buffer<std::uint32_t>& least, std::size_t to, std::size_t from, Precedes&& precedes) {
   if (least[to] == to) {
     least[to] = static_cast<std::uint32_t>(from);
     return true;

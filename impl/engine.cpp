@@ -35,7 +35,7 @@ World::World(const spec::Circles& circles) {
   if (n > std::numeric_limits<std::uint32_t>::max())
     throw std::length_error("World: " + std::to_string(n) + " circles; at most 2^32 - 1");
   for (std::size_t k = 0; k < n; ++k) spec::check_doubles(circles[k], k, spec::Radii::non_negative);
-  for (std::vector<double>* field : {&px_, &py_, &vx_, &vy_, &r_}) resize_buffer(*field, n);
+  for (Buffer<double>* field : {&px_, &py_, &vx_, &vy_, &r_}) field->resize(n);
   for (std::size_t k = 0; k < n; ++k) {
     px_[k] = circles[k][0];
     py_[k] = circles[k][1];
@@ -53,7 +53,7 @@ spec::Circles World::circles() const {
 
 bool World::precedes(std::size_t a, std::size_t b) const noexcept {
   // Each key is decided by exact comparisons of doubles; equal values (−0 and +0 included) pass to the next.
-  for (const std::vector<double>* key : {&px_, &py_, &vx_, &vy_, &r_}) {
+  for (const Buffer<double>* key : {&px_, &py_, &vx_, &vy_, &r_}) {
     const double x = (*key)[a];
     const double y = (*key)[b];
     if (x < y) return true;
@@ -89,7 +89,7 @@ template <class A>
 World BasicEngine<A>::world() const {
   World w;
   const std::size_t n = now_.px.size();
-  for (std::vector<double>* field : {&w.px_, &w.py_, &w.vx_, &w.vy_, &w.r_}) field->resize(n);
+  for (Buffer<double>* field : {&w.px_, &w.py_, &w.vx_, &w.vy_, &w.r_}) field->resize(n);
   for (std::size_t t = 0; t < n; ++t) {
     const std::uint32_t k = layout_.id()[t];
     w.px_[k] = now_.px[t];
@@ -121,7 +121,7 @@ void BasicEngine<A>::read_circles(std::span<const std::uint32_t> slots, std::siz
 template <class A>
 bool BasicEngine<A>::precedes(std::size_t a, std::size_t b) const noexcept {
   // World::precedes on slots: the same keys, then the circles' indices.
-  for (const std::vector<double>* key : {&now_.px, &now_.py, &now_.vx, &now_.vy, &now_.r}) {
+  for (const Buffer<double>* key : {&now_.px, &now_.py, &now_.vx, &now_.vy, &now_.r}) {
     const double x = (*key)[a];
     const double y = (*key)[b];
     if (x < y) return true;
@@ -154,7 +154,7 @@ void BasicEngine<A>::advance() {
   // Every new velocity first, read from world t (a slot's least contact may be another chunk's slot).
   for_each_chunk(chunks, threads_, [&](std::size_t c) {
     // Room for all at once: a first step's moves would otherwise grow by copies, into memory not yet touched.
-    std::vector<Move>& mine = moves_[c];
+    Buffer<Move>& mine = moves_[c];
     mine.clear();
     mine.reserve(found.touched[c].size());
     for (const std::uint32_t t : found.touched[c]) mine.push_back({t, now_.vx[found.least[t]], now_.vy[found.least[t]]});
@@ -237,8 +237,8 @@ void BasicEngine<A>::rebuild() {
   // update in place.
   overflow_free_ = reach + skin_for(horizon + 1, vmax, reach, A::drift) < kOverflowFreeReach;
   // Each radius widened by `widen` (outward, so at least r + widen exactly), or as it is for 0; per chunk.
-  const auto widened = [&](std::vector<double>& to, double widen) {
-    resize_buffer(to, n);
+  const auto widened = [&](Buffer<double>& to, double widen) {
+    to.resize(n);
     for_each_chunk(chunks, threads_, [&](std::size_t c) {
       for (std::size_t t = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1); t < e; ++t)
         to[t] = widen > 0 ? outward_upper(now_.r[t], widen) : now_.r[t];

@@ -58,7 +58,7 @@ class World {
   template <class>
   friend class BasicEngine;
   friend World step_from_contacts(const World& w, std::span<const std::size_t> least);
-  std::vector<double> px_, py_, vx_, vy_, r_;
+  Buffer<double> px_, py_, vx_, vy_, r_;
 };
 
 // A step whose position overflows: at step `step` (the step that would make world `step` from world
@@ -113,7 +113,7 @@ class BasicEngine {
 
  private:
   struct Circles {  // the circles by slot (CellLayout: slot t holds circle layout_.id()[t])
-    std::vector<double> px, py, vx, vy, r;
+    Buffer<double> px, py, vx, vy, r;
   };
   // A new velocity for a slot, kept until every new velocity of the step is known (all read world t).
   struct Move {
@@ -133,8 +133,8 @@ class BasicEngine {
   Circles now_;
   // Scratch: the slots touched per chunk and their moves, the gather's target, the inflated and padded radii,
   // the positions of world t while a step may overflow.
-  std::vector<std::vector<Move>> moves_;
-  std::vector<double> scratch_, inflated_, padded_, backup_px_, backup_py_;
+  std::vector<Buffer<Move>> moves_;
+  Buffer<double> scratch_, inflated_, padded_, backup_px_, backup_py_;
 };
 
 using DoubleEngine = BasicEngine<RoundedArithmetic>;

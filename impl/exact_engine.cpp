@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <numeric>
 #include <span>
@@ -116,7 +117,7 @@ ExactEngine::ExactEngine(const World& w, EngineOptions options)
     const detail::Dyadic d = detail::dyadic(x);
     return d.m == 0 ? Narrow{0} : (Narrow{d.m} * factor) << (d.e + k);  // e + K ≥ 0; fits by the check above
   };
-  std::vector<std::vector<Narrow>*> columns{&s.x, &s.y, &s.vx, &s.vy, &s.r};
+  std::vector<Buffer<Narrow>*> columns{&s.x, &s.y, &s.vx, &s.vy, &s.r};
   for (std::size_t f = 0; f < 5; ++f) {
     columns[f]->resize(n);
     const Narrow factor = f == 2 || f == 3 ? 1 : 60;
@@ -125,7 +126,7 @@ ExactEngine::ExactEngine(const World& w, EngineOptions options)
   den_v_ = Wide(1) << k;
   den_ = 60 * den_v_;
   // Radii are doubles: ρ = r exactly.
-  start(std::move(s), std::vector<double>(w.r().begin(), w.r().end()), std::vector<double>(n, 0.0));
+  start(std::move(s), Buffer<double>(w.r().begin(), w.r().end()), Buffer<double>(n, 0.0));
 }
 
 ExactEngine::ExactEngine(const spec::Sequence& circles, EngineOptions options)
@@ -138,7 +139,7 @@ void ExactEngine::from_rationals(const spec::Sequence& circles) {
   if (n > std::numeric_limits<std::uint32_t>::max())
     throw std::length_error("ExactEngine: " + std::to_string(n) + " circles; at most 2^32 - 1");
   exact::Scaled scaled = exact::scale(circles);
-  std::vector<double> radius(n), radius_error(n);
+  Buffer<double> radius(n), radius_error(n);
   for (std::size_t k = 0; k < n; ++k) {
     radius[k] = scaled.rounded[k][4];
     radius_error[k] = spec::exact(radius[k]) == circles[k].r ? 0.0 : exact::radius_bound(radius[k]);
@@ -146,13 +147,14 @@ void ExactEngine::from_rationals(const spec::Sequence& circles) {
   den_v_ = std::move(scaled.den_v);
   den_ = std::move(scaled.den);
   Columns<Wide> s;
-  std::vector<Wide>* columns[5] = {&s.x, &s.y, &s.vx, &s.vy, &s.r};
-  for (std::size_t f = 0; f < 5; ++f) columns[f]->swap(scaled.columns[f]);
+  Buffer<Wide>* columns[5] = {&s.x, &s.y, &s.vx, &s.vy, &s.r};
+  for (std::size_t f = 0; f < 5; ++f)
+    columns[f]->assign(std::make_move_iterator(scaled.columns[f].begin()), std::make_move_iterator(scaled.columns[f].end()));
   start(std::move(s), std::move(radius), std::move(radius_error));
 }
 
 template <class Int>
-void ExactEngine::start(Columns<Int> s, std::vector<double> radius, std::vector<double> radius_error) {
+void ExactEngine::start(Columns<Int> s, Buffer<double> radius, Buffer<double> radius_error) {
   // RN(x) = ±infinity exactly when |x| ≥ 2^1024 − 2^970, the midpoint between DBL_MAX = 2^1024 − 2^971 and
   // 2^1024, which ties to the even 2^1024 (DBL_MAX's last bit is 1).
   overflow_at_ = ((Wide(1) << 1024) - (Wide(1) << 970)) * den_;
@@ -250,8 +252,8 @@ void ExactEngine::choose_width() {
 template <class To, class From>
 ExactEngine::Columns<To> ExactEngine::converted(const Columns<From>& s) {
   Columns<To> out;
-  const std::vector<From>* from[5] = {&s.x, &s.y, &s.vx, &s.vy, &s.r};
-  std::vector<To>* to[5] = {&out.x, &out.y, &out.vx, &out.vy, &out.r};
+  const Buffer<From>* from[5] = {&s.x, &s.y, &s.vx, &s.vy, &s.r};
+  Buffer<To>* to[5] = {&out.x, &out.y, &out.vx, &out.vy, &out.r};
   for (std::size_t f = 0; f < 5; ++f) {
     to[f]->reserve(from[f]->size());
     for (const From& value : *from[f]) to[f]->push_back(convert<To>(value));
@@ -268,7 +270,7 @@ void ExactEngine::step() {
 }
 
 template <class Int>
-decltype(auto) ExactEngine::now(const std::vector<Int>& x, const std::vector<Int>& v, std::size_t t) const {
+decltype(auto) ExactEngine::now(const Buffer<Int>& x, const Buffer<Int>& v, std::size_t t) const {
   // |X + k·V| is the position of a later world, within the width's proven bound 2^b, and k·|V| ≤ 2^b too
   // (k counts moves since the last proof); the stored X is then within 2^(b+1) (take_velocities), so nothing
   // here leaves the type (b = 61 or 125). A GMP state has no pending moves.
@@ -298,7 +300,7 @@ bool ExactEngine::precedes(const Columns<Int>& s, std::size_t a, std::size_t b) 
     if (at_a < at_b) return true;
     if (at_b < at_a) return false;
   }
-  for (const std::vector<Int>* field : {&s.vx, &s.vy}) {
+  for (const Buffer<Int>* field : {&s.vx, &s.vy}) {
     if ((*field)[a] < (*field)[b]) return true;
     if ((*field)[b] < (*field)[a]) return false;
   }
@@ -369,7 +371,7 @@ void ExactEngine::take_velocities(Columns<Int>& s) {
   const std::size_t chunks = chunk_count(n, threads_);
   const CellLayout::Found found = layout_.found(chunks);
   const auto untouch = [&] {
-    for (const std::vector<std::uint32_t>& list : found.touched)
+    for (const Buffer<std::uint32_t>& list : found.touched)
       for (const std::uint32_t t : list) found.least[t] = t;
   };
   if constexpr (!kFixed<Int>) {
@@ -433,7 +435,7 @@ void ExactEngine::settle(Columns<Int>& s, std::uint64_t moves) {
   const std::size_t n = layout_.size();
   const std::size_t chunks = chunk_count(n, threads_);
   Approximations& a = approx_;
-  for (std::vector<double>* column : {&a.x, &a.y}) column->resize(n);
+  for (Buffer<double>* column : {&a.x, &a.y}) column->resize(n);
   // k·|V| ≤ k·max |V| fits the width: its proof covers every step since it was made, and this runs before
   // each proof. For a GMP state moves is 1 (its step) or 0.
   const Int k = static_cast<Int>(moves);
@@ -544,12 +546,12 @@ void ExactEngine::rebuild(Columns<Int>& s) {
   const auto padding = [&](std::size_t t) {
     return error(std::max(std::fabs(a.x[t]), std::fabs(a.y[t])), layout_.id()[t]) * exact::kCentreSpread;
   };
-  resize_buffer(inflated_, n);
+  inflated_.resize(n);
   for (std::size_t t = 0; t < n; ++t) inflated_[t] = outward_upper(a.rho[t], padding(t) + skin);
   // The slots in cell order, every slot column gathered with them (the radii's integers stay by circle).
   layout_.arrange(threads_, horizon, a.x, a.y, inflated_, impl::Columns<Int>{s.spare, {&s.x, &s.y, &s.vx, &s.vy}},
                   impl::Columns<double>{scratch_, {&a.x, &a.y, &a.rho, &inflated_}});
-  resize_buffer(padded_, n);
+  padded_.resize(n);
   for (std::size_t t = 0; t < n; ++t) padded_[t] = outward_upper(a.rho[t], padding(t));
   // A pair disjoint at the inflated radii cannot meet within the horizon; one that intersects at the padded
   // radii may meet now; the rest from their gap (first_step), the padded radii bounding the exact gap below.

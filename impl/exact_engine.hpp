@@ -91,8 +91,8 @@ class ExactEngine {
   };
   template <class Int>
   struct Columns {
-    std::vector<Int> x, y, vx, vy, r, spare;
-    std::vector<std::vector<Move<Int>>> moves;  // per chunk, the step's changes of velocity
+    Buffer<Int> x, y, vx, vy, r, spare;
+    std::vector<Buffer<Move<Int>>> moves;  // per chunk, the step's changes of velocity
   };
   // By slot, doubles near the exact state: circle id_[t]'s centre is within error_bound_ of (x[t], y[t]) on
   // each axis and its radius within it of rho[t], for every slot a step may test (those in a listed pair, or
@@ -101,7 +101,7 @@ class ExactEngine {
   // wy are the listed slots' moves per step, V·RN(1/D) ≈ v/60, and a step walks x ← RN(x + wx) rather than
   // compute x from X (docs/exact-engine.md, "Walking approximations").
   struct Approximations {
-    std::vector<double> x, y, rho, wx, wy;
+    Buffer<double> x, y, rho, wx, wy;
   };
   // A bound on the errors of the approximations (x, y) and ρ of `circle` as settle() computes them, for
   // m = max(|x|, |y|).
@@ -112,7 +112,7 @@ class ExactEngine {
   // X of slot t now: the integers plus the moves they have not taken (pending_ of them, fixed widths only).
   // Fixed widths give a value, GMP a reference to X itself.
   template <class Int>
-  decltype(auto) now(const std::vector<Int>& x, const std::vector<Int>& v, std::size_t t) const;
+  decltype(auto) now(const Buffer<Int>& x, const Buffer<Int>& v, std::size_t t) const;
   // The same integers in another width (each value must fit).
   template <class To, class From>
   static Columns<To> converted(const Columns<From>& s);
@@ -122,7 +122,7 @@ class ExactEngine {
   // approximations (the first step's rebuild sorts the slots).
   void from_rationals(const spec::Sequence& circles);
   template <class Int>
-  void start(Columns<Int> s, std::vector<double> radius, std::vector<double> radius_error);
+  void start(Columns<Int> s, Buffer<double> radius, Buffer<double> radius_error);
   // The narrowest width that holds the state for at least one more step, and until which step (re-run then).
   void choose_width();
   template <class Int>
@@ -164,7 +164,7 @@ class ExactEngine {
   double inverse_den_ = 1, inverse_den_v_ = 1;                // RN(1/D) and RN(1/L), while fixed-width
   std::uint64_t proven_until_ = 0;  // the fixed-width state is proven to fit through this step
   // Per circle (by index): ρ, the nearest double of the radius, and a bound on |ρ − r| (0 for a double input).
-  std::vector<double> radius_, radius_error_;
+  Buffer<double> radius_, radius_error_;
   bool radii_exact_ = true;  // every radius_error_ is 0
 
   // The slots in cell order (slot t holds circle layout_.id()[t]) and the list of the pairs that can meet
@@ -176,12 +176,12 @@ class ExactEngine {
   // moves behind, and the listed slots' approximations walk (walk()).
   bool walking_ = false;
   double largest_move_ = 0;  // W ≥ every listed |wx|, |wy| of a walking list (contacts only copy them)
-  std::vector<std::uint32_t> listed_;  // the slots in a listed pair, ascending
+  Buffer<std::uint32_t> listed_;  // the slots in a listed pair, ascending
   double vmax_ = -1;                    // speed_bound of the first world (−1: not yet computed)
   std::uint64_t pending_ = 0;           // steps whose moves X and Y have not taken (a walking list; every slot)
   // The rebuild's radii (inflated by the skin and the centres' errors; padded by the errors alone) and
   // the gather's scratch.
-  std::vector<double> inflated_, padded_, scratch_;
+  Buffer<double> inflated_, padded_, scratch_;
 };
 
 }  // namespace circles::impl

@@ -284,7 +284,7 @@ class PairList {
   // rebuild's sort runs between the two, and would otherwise hold the old list beside its own lists (at 10^7
   // circles and 10% coverage, 440 MB of pairs).
   void release() noexcept {
-    for (Chunk& chunk : chunks_) std::vector<ListedPair>().swap(chunk.pairs);
+    for (Chunk& chunk : chunks_) Buffer<ListedPair>().swap(chunk.pairs);
   }
   // Lists every pair {a, b} among those the broad phase offers over `view` (whose radii are the inflated
   // ones), global slots against every slot, for which first(a, b) ≤ horizon, from that step on (candidates
@@ -298,8 +298,8 @@ class PairList {
   // order), and `touched[c]` lists those slots of chunk c. On entry least[t] == t for every t (the caller
   // restores that after using it). Returns the number of intersecting pairs; `tested` gets the pairs tested.
   template <class Intersect, class Precedes, class Prefetch>
-  std::size_t least_contacts(std::uint64_t j, unsigned threads, std::vector<std::uint32_t>& least,
-                             std::vector<std::vector<std::uint32_t>>& touched, std::size_t& tested,
+  std::size_t least_contacts(std::uint64_t j, unsigned threads, Buffer<std::uint32_t>& least,
+                             std::vector<Buffer<std::uint32_t>>& touched, std::size_t& tested,
                              Intersect&& intersect, Precedes&& precedes, Prefetch&& prefetch);
 
   std::size_t size() const noexcept { return size_; }
@@ -327,17 +327,17 @@ class PairList {
     // pairs[0, size): by block, then first step's bucket, then first slot. The vector is the room (its
     // elements uninitialized until written), so that a build writes its pairs without calling out of its
     // loop to append; the room starts at the last build's count and an eighth, and grows by half.
-    std::vector<ListedPair> pairs;
+    Buffer<ListedPair> pairs;
     std::size_t size = 0;
-    std::vector<std::uint32_t> starts;  // pairs of block k, bucket q: [starts[k·K + q], starts[k·K + q + 1])
+    Buffer<std::uint32_t> starts;  // pairs of block k, bucket q: [starts[k·K + q], starts[k·K + q + 1])
     std::vector<ContactOffer> offers;   // a step's contacts for slots of later chunks
   };
   // The chunk that holds `slot`.
   std::size_t chunk_of(std::size_t slot) const noexcept;
 
   std::vector<Chunk> chunks_;
-  std::vector<ListedPair> global_;  // pairs with a global slot, tested from their first step every step
-  std::vector<unsigned char> listed_;  // which slots are in a pair
+  Buffer<ListedPair> global_;  // pairs with a global slot, tested from their first step every step
+  Buffer<unsigned char> listed_;  // which slots are in a pair
   std::uint64_t horizon_ = 0, earliest_ = 0;
   std::size_t size_ = 0, tests_ = 0, slots_ = 0, lonely_ = 0;
 };

@@ -32,8 +32,8 @@ inline void PairList::build(const CellGrid& grid, const CellView& view, unsigned
   chunks_.resize(chunks);
   // Which slots are in a pair: a pair's second slot may be another chunk's, so those marks are relaxed atomic
   // stores, all of the same value.
-  std::vector<unsigned char>& listed = listed_;
-  reserve_buffer(listed, n);
+  Buffer<unsigned char>& listed = listed_;
+  listed.reserve(n);
   listed.assign(n, 0);
   // A listed pair counted in a tally (its tests over the horizon, its earliest first step) and its slots marked.
   using Tally = std::array<std::uint64_t, 2>;
@@ -49,14 +49,14 @@ inline void PairList::build(const CellGrid& grid, const CellView& view, unsigned
   // first step, its slots' marks.
   for_each_chunk(chunks, threads, [&](std::size_t c) {
     Chunk& chunk = chunks_[c];
-    std::vector<ListedPair>& found = chunk.pairs;
+    Buffer<ListedPair>& found = chunk.pairs;
     const std::size_t begin = chunk_begin(n, chunks, c), end = chunk_begin(n, chunks, c + 1);
     chunk.starts.assign((end - begin + kBlockSlots - 1) / kBlockSlots * kBuckets + 1, 0);
     std::uint32_t* const count = chunk.starts.data() + 1;
     const std::size_t room = chunk.size + chunk.size / 8 + 1024;
     if (found.size() < room) {
       found.clear();  // nothing in it is kept: the build writes every pair again
-      resize_buffer(found, room);
+      found.resize(room);
     }
     std::size_t size = 0;
     Tally mine{0, horizon + 1};  // a local, kept in registers, written to tally[c] at the end
@@ -73,7 +73,7 @@ inline void PairList::build(const CellGrid& grid, const CellView& view, unsigned
           const std::uint32_t step = first_of(a, b);
           if (step > horizon) continue;
           if (size == found.size()) [[unlikely]]
-            resize_buffer(found, size + size / 2);
+            found.resize(size + size / 2);
           const ListedPair p{static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b), step};
           found[size++] = p;
           ++count[bins + std::min(step, kBuckets - 1)];
@@ -121,10 +121,10 @@ inline void PairList::build(const CellGrid& grid, const CellView& view, unsigned
     Chunk& chunk = chunks_[c];
     const std::size_t blocks = (chunk.starts.size() - 1) / kBuckets;
     const std::size_t begin = chunk_begin(n, chunks, c);
-    std::vector<ListedPair>& pairs = chunk.pairs;
+    Buffer<ListedPair>& pairs = chunk.pairs;
     for (std::size_t k = 1; k < chunk.starts.size(); ++k) chunk.starts[k] += chunk.starts[k - 1];
     std::vector<std::uint32_t> at(chunk.starts.begin(), chunk.starts.end() - 1);
-    std::vector<ListedPair> run;
+    Buffer<ListedPair> run;
     for (std::size_t k = 0; k < blocks; ++k) {
       // Block k's pairs: [starts[k·K], starts[(k + 1)·K]), since every earlier block's pairs come first.
       run.assign(pairs.begin() + chunk.starts[k * kBuckets], pairs.begin() + chunk.starts[(k + 1) * kBuckets]);
@@ -144,14 +144,14 @@ inline void PairList::build(const CellGrid& grid, const CellView& view, unsigned
 }
 
 template <class Intersect, class Precedes, class Prefetch>
-std::size_t PairList::least_contacts(std::uint64_t j, unsigned threads, std::vector<std::uint32_t>& least,
-                                     std::vector<std::vector<std::uint32_t>>& touched, std::size_t& tested,
+std::size_t PairList::least_contacts(std::uint64_t j, unsigned threads, Buffer<std::uint32_t>& least,
+                                     std::vector<Buffer<std::uint32_t>>& touched, std::size_t& tested,
                                      Intersect&& intersect, Precedes&& precedes, Prefetch&& prefetch) {
   const std::size_t chunks = chunks_.size();
   touched.resize(chunks);
   std::vector<std::array<std::size_t, 2>> counts(chunks);  // per chunk: pairs tested, pairs intersecting
   // A slot's first offer records it as touched (impl/contacts.hpp).
-  const auto offer = [&](std::size_t to, std::size_t from, std::vector<std::uint32_t>& list) {
+  const auto offer = [&](std::size_t to, std::size_t from, Buffer<std::uint32_t>& list) {
     if (offer_least_contact(least, to, from, precedes)) list.push_back(static_cast<std::uint32_t>(to));
   };
   // The buckets active at step j: 0 … j, the last one (first steps ≥ kBuckets − 1) pair by pair.
@@ -169,7 +169,7 @@ std::size_t PairList::least_contacts(std::uint64_t j, unsigned threads, std::vec
     const auto before = precedes;
     const auto ask = prefetch;
     const ListedPair* const pairs = chunk.pairs.data();
-    std::vector<std::uint32_t>& mine = touched[c];
+    Buffer<std::uint32_t>& mine = touched[c];
     const auto test = [&](const ListedPair& p) {
       ++seen;
       if (!intersects(p.a, p.b)) [[likely]]

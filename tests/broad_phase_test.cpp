@@ -44,7 +44,7 @@ Sorted sorted(const std::vector<std::array<double, 3>>& circles) {
   s.grid.plan(px, py, r);
   std::vector<CellKey> keys(px.size());
   s.grid.keys(px, py, r, keys);
-  std::vector<std::uint32_t> order;
+  Buffer<std::uint32_t> order;
   CellOrder().sort(keys, {}, order);
   for (const std::uint32_t t : order) {
     s.key.push_back(keys[t]);
@@ -128,8 +128,8 @@ TEST(broad_phase, keys_order_cells_by_level_band_column_then_row_within_the_band
 }
 
 // The slots of `keys` in (key, slot) order, by a plain stable sort: what CellOrder::sort must return.
-std::vector<std::uint32_t> plainly_sorted(const std::vector<CellKey>& keys) {
-  std::vector<std::uint32_t> order(keys.size());
+Buffer<std::uint32_t> plainly_sorted(const std::vector<CellKey>& keys) {
+  Buffer<std::uint32_t> order(keys.size());
   std::iota(order.begin(), order.end(), 0u);
   std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return keys[a] < keys[b]; });
   return order;
@@ -150,7 +150,7 @@ TEST(broad_phase, the_guided_re_sort_equals_a_plain_sort_after_moves_within_and_
     };
     moved[t] = G::pack(G::level(k), shift(G::cell_y(k)), shift(G::cell_x(k)));
   }
-  std::vector<std::uint32_t> guided;
+  Buffer<std::uint32_t> guided;
   CellOrder().sort(moved, s.key, guided);
   EXPECT_EQ(guided, plainly_sorted(moved));
 }
@@ -176,7 +176,7 @@ TEST(broad_phase, the_sort_of_many_unguided_keys_equals_a_plain_sort_whichever_b
     std::vector<CellKey> keys(n);
     for (CellKey& k : keys)
       for (const CellKey b : bits) k |= b & random();
-    std::vector<std::uint32_t> order;
+    Buffer<std::uint32_t> order;
     CellOrder().sort(keys, {}, order);
     EXPECT_EQ(order, plainly_sorted(keys)) << name;
   }
@@ -185,7 +185,7 @@ TEST(broad_phase, the_sort_of_many_unguided_keys_equals_a_plain_sort_whichever_b
     k = random() % 50 == 0 ? G::pack(G::kGlobalLevel, 0, 0)
                            : G::pack(static_cast<unsigned>(random() % 3) * 7, static_cast<std::uint32_t>(random() % 300),
                                      static_cast<std::uint32_t>(random() % 40) + (std::uint32_t{1} << 20));
-  std::vector<std::uint32_t> order;
+  Buffer<std::uint32_t> order;
   CellOrder().sort(keys, {}, order);
   EXPECT_EQ(order, plainly_sorted(keys)) << "the layout";
   // A planned scene: cells around kCells / 2 on both axes (CellGrid::plan centres it there), so columns and
@@ -211,7 +211,7 @@ TEST(broad_phase, the_guided_re_sort_equals_a_plain_sort_when_every_slot_changes
   std::sort(previous.begin(), previous.end());
   for (std::size_t t = 0; t < n; ++t)
     moved[t] = G::pack(0, G::cell_y(previous[t]), static_cast<std::uint32_t>(random() % 500));
-  std::vector<std::uint32_t> guided;
+  Buffer<std::uint32_t> guided;
   EXPECT_FALSE(CellOrder().sort(moved, previous, guided));
   EXPECT_EQ(guided, plainly_sorted(moved));
 }
@@ -251,7 +251,7 @@ TEST(broad_phase, the_re_sort_in_parts_on_several_threads_equals_a_plain_sort) {
       while (part + 1 < chunks && previous[chunk_begin(n, chunks, part + 1)] <= moved[t]) ++part;
       crossed += part != t * chunks / n;
     }
-    std::vector<std::uint32_t> parted;
+    Buffer<std::uint32_t> parted;
     CellOrder order;
     EXPECT_FALSE(order.sort(moved, previous, parted, threads));
     EXPECT_EQ(parted, plainly_sorted(moved)) << threads << " threads";
@@ -262,7 +262,7 @@ TEST(broad_phase, the_re_sort_in_parts_on_several_threads_equals_a_plain_sort) {
     // The same CellOrder again, on the result's own order: nothing left over from the last call.
     std::vector<CellKey> again(n);
     for (std::size_t t = 0; t < n; ++t) again[t] = moved[parted[t]];
-    std::vector<std::uint32_t> identity;
+    Buffer<std::uint32_t> identity;
     EXPECT_TRUE(order.sort(again, moved, identity, threads));
   }
 }

@@ -1,9 +1,12 @@
-// impl/buffers.hpp: growing a buffer through the huge-page advice keeps what it held, as reserve and resize do.
+// impl/buffers.hpp: Buffer<T> holds what a std::vector holds, and its blocks of 2 MiB and more start on a
+// huge page's boundary, so that the kernel can back all of them with huge pages.
 #include "impl/buffers.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <limits>
+#include <new>
 #include <numeric>
 #include <string>
 #include <vector>
@@ -11,32 +14,36 @@
 namespace circles::impl {
 namespace {
 
-TEST(buffers, a_buffer_grown_past_2_mib_keeps_its_elements_and_value_initializes_the_new_ones) {
-  std::vector<std::uint64_t> v(1000);
+std::uintptr_t offset_in_huge_page(const void* p) { return reinterpret_cast<std::uintptr_t>(p) % kHugePage; }
+
+TEST(buffers, a_buffer_grown_past_2_mib_starts_on_a_huge_page_and_keeps_its_elements) {
+  Buffer<std::uint64_t> v(1000);
   std::iota(v.begin(), v.end(), std::uint64_t{7});
-  resize_buffer(v, std::size_t{1} << 20);  // 8 MiB: advised
+  v.resize(std::size_t{1} << 20);  // 8 MiB
+  EXPECT_EQ(offset_in_huge_page(v.data()), 0u);
   ASSERT_EQ(v.size(), std::size_t{1} << 20);
   for (std::size_t k = 0; k < 1000; ++k) ASSERT_EQ(v[k], 7 + k);
   for (std::size_t k = 1000; k < v.size(); ++k) ASSERT_EQ(v[k], 0u);
-  const std::uint64_t* data = v.data();
-  resize_buffer(v, 10);  // shrinking neither moves nor frees
-  EXPECT_EQ(v.data(), data);
-  EXPECT_EQ(v.size(), 10u);
+  // Blocks just at and just under the threshold, and an odd size above it (rounded up to whole huge pages).
+  Buffer<char> at(kHugePage), under(kHugePage - 1, 'u'), odd(3 * kHugePage + 12345, 'o');
+  EXPECT_EQ(offset_in_huge_page(at.data()), 0u);
+  EXPECT_EQ(offset_in_huge_page(odd.data()), 0u);
+  EXPECT_EQ(odd.back(), 'o');
+  EXPECT_EQ(under.back(), 'u');
 }
 
 TEST(buffers, elements_that_own_memory_are_moved_not_lost) {
-  std::vector<std::string> v{"a string long enough to live on the heap, not in the object", "b"};
-  reserve_buffer(v, 1u << 17);  // 4 MiB of std::string
+  Buffer<std::string> v{"a string long enough to live on the heap, not in the object", "b"};
+  v.reserve(1u << 17);  // 4 MiB of std::string
   EXPECT_GE(v.capacity(), 1u << 17);
-  EXPECT_EQ(v, (std::vector<std::string>{"a string long enough to live on the heap, not in the object", "b"}));
+  EXPECT_EQ(std::vector<std::string>(v.begin(), v.end()),
+            (std::vector<std::string>{"a string long enough to live on the heap, not in the object", "b"}));
 }
 
-TEST(buffers, advice_on_any_range_is_harmless) {
-  advise_huge_pages(nullptr, 0);
-  advise_huge_pages(nullptr, std::size_t{1} << 30);
-  std::vector<char> small(100, 'x');
-  advise_huge_pages(small.data(), small.size());
-  EXPECT_EQ(small, std::vector<char>(100, 'x'));
+TEST(buffers, a_block_too_large_to_map_is_a_bad_alloc_not_a_crash) {
+  BufferAllocator<double> allocator;
+  EXPECT_THROW((void)allocator.allocate(std::numeric_limits<std::size_t>::max() / 4), std::bad_array_new_length);
+  EXPECT_THROW((void)allocator.allocate(std::size_t{1} << 60), std::bad_alloc);  // 2^63 bytes: no mapping
 }
 
 }  // namespace
