@@ -62,17 +62,6 @@ bool World::precedes(std::size_t a, std::size_t b) const noexcept {
   return a < b;
 }
 
-std::string overflow_reason(std::size_t index, spec::Field field) {
-  return "circle " + std::to_string(index) + ", field " + spec::name(field) +
-         ": the position p + v/60 overflows to infinity";
-}
-
-PositionOverflow::PositionOverflow(std::uint64_t s, std::size_t i, spec::Field f)
-    : std::overflow_error("step " + std::to_string(s) + ", " + overflow_reason(i, f)),
-      step(s),
-      index(i),
-      field(f) {}
-
 // ── The engine ────────────────────────────────────────────────────────────────────────────────────────
 
 template <class A>

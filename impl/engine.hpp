@@ -18,6 +18,7 @@
 
 #include "impl/arithmetic.hpp"
 #include "impl/cell_layout.hpp"
+#include "impl/overflow.hpp"
 #include "spec/outside_c.hpp"
 
 #include <cstddef>
@@ -59,22 +60,6 @@ class World {
   friend class BasicEngine;
   friend World step_from_contacts(const World& w, std::span<const std::size_t> least);
   std::vector<double> px_, py_, vx_, vy_, r_;
-};
-
-// A step whose position overflows: at step `step` (the step that would make world `step` from world
-// `step` − 1), circle `index`'s coordinate `field` (px or py) would become ±infinity. The world is left
-// as it was before that step.
-// "circle <index>, field <field>: the position p + v/60 overflows to infinity": the reason every overflow of a
-// position is reported with: by the engines here, and by the registry's steppers, `circles serve` and
-// `circles check-trace`.
-std::string overflow_reason(std::size_t index, spec::Field field);
-
-class PositionOverflow : public std::overflow_error {
- public:
-  PositionOverflow(std::uint64_t step, std::size_t index, spec::Field field);
-  std::uint64_t step;
-  std::size_t index;
-  spec::Field field;
 };
 
 // The engine: circles kept in cell order (impl/broad_phase.hpp), a list of the pairs that can meet before
