@@ -23,6 +23,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <numeric>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -145,5 +146,23 @@ inline void offer_contact(const World& w, std::vector<std::size_t>& least, std::
 // then p ← advance_rounded(p, v). Throws PositionOverflow (step 1) for the first circle, then px before py,
 // whose position overflows, like DoubleEngine::step.
 World step_from_contacts(const World& w, std::span<const std::size_t> least);
+
+// The references' step over the pairs that `pairs` offers (step_all_pairs every pair, step_grid those of
+// neighbouring cells): pairs(visit) calls visit(a, b) once for each pair a < b it offers, which must include
+// every pair that intersects; each is tested with intersect_exact, each circle's least contact kept by
+// offer_contact, and step_from_contacts ends the step. Throws PositionOverflow (step 1) like it.
+template <class Pairs>
+World step_over_pairs(const World& w, Pairs pairs) {
+  std::vector<std::size_t> least(w.size());
+  std::iota(least.begin(), least.end(), std::size_t{0});
+  const auto px = w.px(), py = w.py(), r = w.r();
+  pairs([&](std::size_t a, std::size_t b) {
+    if (intersect_exact(px[a], py[a], r[a], px[b], py[b], r[b])) {
+      offer_contact(w, least, a, b);
+      offer_contact(w, least, b, a);
+    }
+  });
+  return step_from_contacts(w, least);
+}
 
 }  // namespace circles::impl
