@@ -1,21 +1,13 @@
-// The reports of `circles conform --report` (cli/report.hpp lists their keys) of the shards of one run, merged
+// The reports of `circles conform --report` (conform/report.hpp lists their keys) of the shards of one run, merged
 // into one by the rules of a verdict: `circles report merge`.
 #pragma once
 
-#include <stdexcept>
+#include "conform/report.hpp"
+
 #include <string>
 #include <vector>
 
 namespace circles::conform {
-
-// The format of a report, its key "format".
-inline constexpr const char* kReportFormat = "circles-conform-report/1";
-
-// A report that cannot be read or merged; what() names the file and why.
-class ReportError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 // The reports of shards of one run (the same candidate, seed, level, profile, steps and shard count, each
 // shard once), as one: cases, skipped and per-family counts add up; the verdict is "cannot check" if any is,
