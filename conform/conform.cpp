@@ -217,6 +217,12 @@ const char* name(Outcome outcome) {
   return "cannot check";
 }
 
+std::optional<Outcome> parse_outcome(std::string_view text) {
+  for (const Outcome o : {Outcome::conforms, Outcome::does_not_conform, Outcome::cannot_check})
+    if (text == name(o)) return o;
+  return std::nullopt;
+}
+
 namespace {
 constexpr FamilyStatus kStatuses[] = {FamilyStatus::passed,         FamilyStatus::failed,  FamilyStatus::expected_failure,
                                       FamilyStatus::unexpected_pass, FamilyStatus::skipped, FamilyStatus::not_reached};

@@ -95,6 +95,8 @@ class ConformError : public std::runtime_error {
 // The three verdicts, as the report names them: "conforms", "does not conform", "cannot check" (exit 0, 1, 2).
 enum class Outcome { conforms, does_not_conform, cannot_check };
 const char* name(Outcome outcome);
+// The outcome of that name; nothing for another text.
+std::optional<Outcome> parse_outcome(std::string_view text);
 
 // How one family fared: passed or failed; against an expectation file (conform/expect.hpp), a listed family
 // that failed is an expected_failure and one that passed an unexpected_pass; a family left out by
@@ -156,12 +158,15 @@ struct Verdict {
   std::optional<Counterexample> counterexample;
   std::string error;                             // why, when the outcome is cannot_check
   std::chrono::duration<double> elapsed{};       // wall time of the check
+  // The shards a verdict merged from their reports combines (conform/merge.hpp), in order; empty for a run's
+  // own verdict, whose shard is options.shard.
+  std::vector<std::uint64_t> merged_shards{};
   std::uint64_t checked() const { return cases - skipped; }
 };
 
 // conform's rule for the outcome of a verdict that could check, from the rest of it: does not conform when it has
-// a counterexample, or a family failed or passed unexpectedly; else conforms. A run (check) and a run judged
-// against an expectation file (conform/expect.hpp) each decide by it.
+// a counterexample, or a family failed or passed unexpectedly; else conforms. A run (check), a run judged against
+// an expectation file (conform/expect.hpp) and the shards of a run merged (conform/merge.hpp) each decide by it.
 Outcome checked_outcome(const Verdict& verdict);
 
 // Sets FamilyResult::has_counterexample on the family Verdict::counterexample names, and on no other.

@@ -1,5 +1,5 @@
-// The JSON report of a verdict (`circles conform --report FILE.json`), which `circles report merge OUT.json
-// IN.json...` combines for the shards of one run (conform/merge.hpp); and the lines of a
+// The JSON report of a verdict (`circles conform --report FILE.json`), written and read back, which `circles report
+// merge OUT.json IN.json...` combines for the shards of one run (conform/merge.hpp); and the lines of a
 // counterexample that every report of it shares (the printed verdict, cli/conform_report.hpp, and the JUnit XML,
 // cli/report.hpp).
 //
@@ -31,6 +31,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace circles::conform {
 
@@ -51,7 +52,7 @@ std::string difference_line(const Counterexample& c);
 // decision differs, and its replay line.
 std::string counterexample_summary(const Counterexample& c);
 
-// The verdict's shard, "0/1".
+// The verdict's shard, "0/1", or the shards a merged verdict combines, "0,1,2,3/4".
 std::string shard_text(const Verdict& verdict);
 
 // The verdict's wall time in seconds as the reports write it, "0.43".
@@ -59,5 +60,16 @@ std::string elapsed_text(const Verdict& verdict);
 
 // The JSON report. `text`: the run's counterexample as `circles conform` prints it (cli/conform_report.hpp).
 std::string json_report(const Verdict& verdict, const std::string& text);
+
+// A report read back: the verdict as far as the report holds it, and the text of its counterexample.
+struct Report {
+  Verdict verdict;
+  std::string text;
+};
+
+// Reads a report (`name` names it in messages): every key the verdict is made from is checked for the type
+// json_report writes it with; a counterexample's keys may be left out (each then keeps its default), and the
+// families must be the profile's. Throws ReportError: "b.json: \"cases\": expected an integer >= 0, found \"12\"".
+Report read_report(std::string_view text, const std::string& name);
 
 }  // namespace circles::conform
