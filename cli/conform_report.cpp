@@ -1,5 +1,7 @@
 #include "cli/conform_report.hpp"
 
+#include "cli/counted.hpp"
+#include "conform/report.hpp"  // difference_line
 #include "formats/json_number.hpp"
 #include "formats/output_file.hpp"
 #include "pictures/counterexample_svg.hpp"
@@ -15,16 +17,12 @@ namespace circles::cli {
 namespace {
 
 using conform::Counterexample;
+using conform::difference_line;
 using conform::Outcome;
 using conform::Verdict;
 using spec::Circles;
 using properties::Profile;
 namespace json_number = formats::json_number;
-
-// "1 case", "0 cases", "2 cases"; "1 try", "2 tries".
-std::string counted(std::uint64_t n, const std::string& noun, const std::string& plural = "") {
-  return std::to_string(n) + " " + (n == 1 ? noun : plural.empty() ? noun + "s" : plural);
-}
 
 // "  TITLE:", then a line "    #k [px, py, vx, vy, r]" per circle, each after `indent`.
 void print_world(std::ostream& out, const std::string& title, const Circles& w, const std::string& indent = "") {
@@ -52,14 +50,6 @@ std::string found(const Verdict& v, const Counterexample& c) {
   return "case " + std::to_string(c.case_index.value_or(0)) + " of seed " + std::to_string(v.options.seed) +
          " (family " + c.family + "), shrunk from " + std::to_string(c.circles_before) + " to " +
          counted(c.shrink_path.back().size(), "circle") + " in " + counted(c.tries, "try", "tries");
-}
-
-// One line of a counterexample: "step 1 of 1, circle 0, field px: expected 0.5 (0x1p-1), got … (hex)".
-std::string difference_line(const Counterexample& c) {
-  const properties::Difference& d = c.difference;
-  return "step " + std::to_string(c.step) + " of " + std::to_string(c.steps) + ", circle " + std::to_string(d.circle) +
-         ", field " + spec::name(d.field) + ": expected " + json_number::decimal_and_hex(d.expected) +
-         ", got " + json_number::decimal_and_hex(d.actual);
 }
 
 // The lines that open the report of a counterexample, and its picture's legend.

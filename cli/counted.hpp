@@ -1,4 +1,5 @@
-// A count and its noun in the number the count asks for: "1 step", "0 steps", "2 steps".
+// A count and its noun in the number the count asks for: "1 step", "0 steps", "2 steps"; with its plural given,
+// "1 try", "2 tries".
 #pragma once
 
 #include <cstdint>
@@ -6,8 +7,8 @@
 
 namespace circles::cli {
 
-inline std::string counted(std::uint64_t n, const std::string& noun) {
-  return std::to_string(n).append(" ").append(noun).append(n == 1 ? "" : "s");
+inline std::string counted(std::uint64_t n, const std::string& noun, const std::string& plural = "") {
+  return std::to_string(n) + " " + (n == 1 ? noun : plural.empty() ? noun + "s" : plural);
 }
 
 }  // namespace circles::cli

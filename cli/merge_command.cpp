@@ -1,10 +1,9 @@
 #include "cli/merge_command.hpp"
 
+#include "cli/counted.hpp"
 #include "cli/report.hpp"  // write_report
 #include "conform/merge.hpp"
 #include "formats/output_file.hpp"
-
-#include <nlohmann/json.hpp>
 
 #include <fstream>
 #include <sstream>
@@ -35,18 +34,19 @@ int merge_command(const std::string& out, const std::vector<std::string>& report
     texts.push_back(text.str());
   }
   try {
-    const std::string merged = conform::merge_reports(texts, reports);
-    write_report(out, "report", merged);
-    const nlohmann::json m = nlohmann::json::parse(merged);
-    const std::string verdict = m["verdict"];
-    said << "circles report merge: " << out << ": " << m["candidate"].get<std::string>() << " " << verdict << ": "
-         << m["cases"].get<std::uint64_t>() << (m["cases"] == 1 ? " case" : " cases") << " of seed "
-         << m["seed"].get<std::uint64_t>() << " in " << reports.size() << (reports.size() == 1 ? " report" : " reports");
-    if (m["counterexample"].is_object() && m["counterexample"].contains("replay"))
-      said << "; replay: " << m["counterexample"]["replay"].get<std::string>();
-    if (m["error"].is_string()) said << "; " << m["error"].get<std::string>();
+    const conform::Report merged = conform::merged_report(texts, reports);
+    write_report(out, "report", conform::json_report(merged.verdict, merged.text));
+    const conform::Verdict& v = merged.verdict;
+    said << "circles report merge: " << out << ": " << v.candidate << " " << name(v.outcome) << ": "
+         << counted(v.cases, "case") << " of seed " << v.options.seed << " in " << counted(reports.size(), "report");
+    if (v.counterexample && !v.counterexample->replay.empty()) said << "; replay: " << v.counterexample->replay;
+    if (!v.error.empty()) said << "; " << v.error;
     said << "\n";
-    return verdict == "conforms" ? 0 : verdict == "does not conform" ? 1 : 2;
+    switch (v.outcome) {
+      case conform::Outcome::conforms: return 0;
+      case conform::Outcome::does_not_conform: return 1;
+      case conform::Outcome::cannot_check: break;
+    }
   } catch (const conform::ReportError& e) {
     err << "circles report merge: " << e.what() << "\n";
   } catch (const formats::OutputError& e) {

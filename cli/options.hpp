@@ -33,9 +33,25 @@ struct SceneOptions {
   std::string name() const;
 };
 
-// The positional scene file of `command`, and then (after the options that --help lists between them) the random
-// scene's options, which exclude `file`.
+// The positional scene file of `command`, and the random scene's options, which exclude `file`: the pieces of
+// add_scene_options.
 CLI::Option* add_scene_file(CLI::App* command, SceneOptions& scene);
 void add_random_options(CLI::App* command, CLI::Option* file, SceneOptions& scene);
+
+// The scene of a command that runs on one (oracle, run) and its steps, in the order --help lists them: the
+// positional scene file, --steps N from 0 to `most` (default: the scene's "steps", else what `steps` holds), and
+// the random scene's options. Returns --steps, whose count() says whether it was given, and whose default
+// main.cpp shows for a scene with "steps". A `most` below 2^64 - 5 also refuses "-5", which CLI11 reads as
+// 2^64 - 5 (strtoull).
+template <class Count>
+CLI::Option* add_scene_options(CLI::App* command, SceneOptions& scene, Count& steps, Count most) {
+  CLI::Option* file = add_scene_file(command, scene);
+  CLI::Option* steps_option =
+      command->add_option("--steps", steps, "Number of steps (default: the scene's \"steps\", else 100)")
+          ->capture_default_str()
+          ->check(CLI::Range(Count{0}, most));
+  add_random_options(command, file, scene);
+  return steps_option;
+}
 
 }  // namespace circles::cli

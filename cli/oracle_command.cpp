@@ -23,12 +23,7 @@ formats::Scene exact_scene(const SceneOptions& scene) {
 CLI::App* add_oracle_command(CLI::App& app, SceneOptions& scene, OracleCommandOptions& options) {
   CLI::App* oracle = app.add_subcommand(
       "oracle", "Run the exact oracle in both profiles on a scene and report what it did (the main job's first part)");
-  CLI::Option* file = add_scene_file(oracle, scene);
-  options.steps_option = oracle->add_option("--steps", options.steps,
-                                            "Number of steps (default: the scene's \"steps\", else 100)")
-                             ->capture_default_str()
-                             ->check(CLI::Range(std::size_t{0}, kMaxOracleSteps));
-  add_random_options(oracle, file, scene);
+  options.steps_option = add_scene_options(oracle, scene, options.steps, kMaxOracleSteps);
   return oracle;
 }
 

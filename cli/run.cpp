@@ -25,6 +25,14 @@ using Clock = std::chrono::steady_clock;
 
 namespace {
 
+// Runs `work` and adds its wall time to `figure`.
+template <class Work>
+void timed(RunResult::Seconds& figure, Work work) {
+  const auto begin = Clock::now();
+  work();
+  figure += Clock::now() - begin;
+}
+
 // --fit's first pass: the same engine stepped from w_0 without drawing, for the box of every frame's circles (the
 // engines are deterministic, so the run's pass meets the same worlds).
 View fitted_view(const Circles& world, const RunOptions& options, Progress& progress) {
@@ -46,38 +54,18 @@ View fitted_view(const Circles& world, const RunOptions& options, Progress& prog
 // Frame t of world `w` drawn, and written as a PNG and as the video's next frame where asked.
 void draw(Frame& frame, const Circles& w, const View& view, std::uint64_t t, std::optional<FrameDirectory>& frames,
           std::optional<Video>& video, RunResult& result) {
-  auto begin = Clock::now();
-  frame.draw(w, view);
-  auto end = Clock::now();
-  result.drawing += end - begin;
-  if (frames) {
-    begin = end;
-    frames->write(frame, t);
-    end = Clock::now();
-    result.png += end - begin;
-  }
-  if (video) {
-    begin = end;
-    video->add(frame);
-    result.video += Clock::now() - begin;
-  }
+  timed(result.drawing, [&] { frame.draw(w, view); });
+  if (frames) timed(result.png, [&] { frames->write(frame, t); });
+  if (video) timed(result.video, [&] { video->add(frame); });
   ++result.frames;
 }
 
 // The outputs renamed into place (the video: ffmpeg waited for), each timed with its own figure.
 void commit(std::optional<OutputFile>& trace, std::optional<OutputFile>& exact_trace, std::optional<Video>& video,
             RunResult& result) {
-  if (trace) {
-    const auto begin = Clock::now();
-    trace->commit();
-    result.tracing += Clock::now() - begin;
-  }
+  if (trace) timed(result.tracing, [&] { trace->commit(); });
   if (exact_trace) exact_trace->commit();
-  if (video) {
-    const auto begin = Clock::now();
-    video->commit();
-    result.video += Clock::now() - begin;
-  }
+  if (video) timed(result.video, [&] { video->commit(); });
 }
 
 }  // namespace
@@ -102,11 +90,7 @@ RunResult run(Circles world, const RunOptions& options) {
   Progress progress(options.progress, options.steps, fit ? 2 : 1, started);
 
   View view = View::pixels();
-  if (fit) {
-    const auto fit_start = Clock::now();
-    view = fitted_view(world, options, progress);
-    result.fitting = Clock::now() - fit_start;
-  }
+  if (fit) timed(result.fitting, [&] { view = fitted_view(world, options, progress); });
 
   std::optional<Frame> frame;
   if (pictures) frame.emplace();
@@ -117,11 +101,10 @@ RunResult run(Circles world, const RunOptions& options) {
   // World t, read from `w` where the caller holds it (w_0), else from the stepper: a part at a time for the
   // trace (LineWriter), whole only for a frame.
   const auto record = [&](std::uint64_t t, const Circles* w, const Stepper& stepper) {
-    if (trace) {
-      const auto begin = Clock::now();
-      result.trace_bytes += writer.write(to_trace, kStep, t, circles, w ? source_of(*w) : stepper.source());
-      result.tracing += Clock::now() - begin;
-    }
+    if (trace)
+      timed(result.tracing, [&] {
+        result.trace_bytes += writer.write(to_trace, kStep, t, circles, w ? source_of(*w) : stepper.source());
+      });
     if (exact_trace) {
       line.clear();
       append_exact_line(line, t, *stepper.exact());

@@ -3,6 +3,7 @@
 // (conform::compare_with_oracle).
 #pragma once
 
+#include "cli/names.hpp"
 #include "conform/check_trace.hpp"  // Comparison
 #include "engines/registry.hpp"
 #include "formats/output_file.hpp"
@@ -17,11 +18,6 @@
 #include <vector>
 
 namespace circles::cli {
-
-// The program's layer names the libraries' types and functions unqualified.
-using namespace circles::formats;
-using namespace circles::conform;
-using namespace circles::engines;
 
 // A trace that cannot be written: what() names the file and the system's reason (formats/output_file.hpp).
 using TraceError = OutputError;

@@ -43,13 +43,8 @@ void print_overflow(const RunResult& result, const RunCommandOptions& given, std
 CLI::App* add_run_command(CLI::App& app, SceneOptions& scene, RunCommandOptions& options) {
   CLI::App* run = app.add_subcommand(
       "run", "Run an engine on a scene, optionally writing a JSON Lines trace, PNG frames or a video (docs/run.md)");
-  CLI::Option* file = add_scene_file(run, scene);
-  // Up to 2^63 - 1: CLI11 reads "-5" as 2^64 - 5 (strtoull), which this range refuses.
-  options.steps_option = run->add_option("--steps", options.steps,
-                                         "Number of steps (default: the scene's \"steps\", else 100)")
-                             ->capture_default_str()
-                             ->check(CLI::Range(std::uint64_t{0}, kMaxSceneSteps));
-  add_random_options(run, file, scene);
+  // Up to 2^63 - 1, as a scene's "steps".
+  options.steps_option = add_scene_options(run, scene, options.steps, kMaxSceneSteps);
   add_engine_options(run, options.engine, options.threads);
   run->add_option("--trace", options.trace,
                   "Write every world to this file, one JSON line {\"step\": t, \"circles\": [...]} each");
@@ -80,15 +75,17 @@ int run_command(const SceneOptions& scene, const RunCommandOptions& given, std::
     err << "circles run: --fit and --every shape the frames of --render and --video, and neither is given\n";
     return 2;
   }
-  RunOptions options{given.steps, &engine, given.threads, given.trace};
-  options.exact_trace = given.exact_trace;
-  options.render = given.render;
-  options.every = given.every;
-  options.video = given.video;
-  options.fit = given.fit;
-  options.progress = given.progress;
   if (!from_file) world = world_of(scene, engine);
-  if (given.steps_option->count() == 0 && world.steps) options.steps = *world.steps;
+  const RunOptions options{.steps = given.steps_option->count() == 0 && world.steps ? *world.steps : given.steps,
+                           .engine = &engine,
+                           .threads = given.threads,
+                           .trace = given.trace,
+                           .exact_trace = given.exact_trace,
+                           .render = given.render,
+                           .every = given.every,
+                           .video = given.video,
+                           .fit = given.fit,
+                           .progress = given.progress};
   const std::size_t circle_count = world.circles.size();
   RunResult result;
   try {

@@ -2,6 +2,7 @@
 // made by conform/vectors.hpp, each written as formats/vectors.hpp says.
 #pragma once
 
+#include "cli/names.hpp"
 #include "conform/vectors.hpp"
 
 #include <CLI/CLI.hpp>
@@ -9,10 +10,6 @@
 #include <ostream>
 
 namespace circles::cli {
-
-// The program's layer names the libraries' types and functions unqualified.
-using namespace circles::formats;
-using namespace circles::conform;
 
 // Declares the command and its options on `app`.
 CLI::App* add_vectors_command(CLI::App& app, VectorsOptions& options);

@@ -217,6 +217,12 @@ const char* name(Outcome outcome) {
   return "cannot check";
 }
 
+std::optional<Outcome> parse_outcome(std::string_view text) {
+  for (const Outcome o : {Outcome::conforms, Outcome::does_not_conform, Outcome::cannot_check})
+    if (text == name(o)) return o;
+  return std::nullopt;
+}
+
 namespace {
 constexpr FamilyStatus kStatuses[] = {FamilyStatus::passed,         FamilyStatus::failed,  FamilyStatus::expected_failure,
                                       FamilyStatus::unexpected_pass, FamilyStatus::skipped, FamilyStatus::not_reached};
@@ -240,23 +246,47 @@ std::optional<FamilyStatus> parse_family_status(std::string_view text) {
   return std::nullopt;
 }
 
+std::optional<properties::Family> parse_family(std::string_view name, Profile profile) {
+  for (const properties::Family f : properties::families(profile))
+    if (name == properties::name(f)) return f;
+  return std::nullopt;
+}
+
 std::vector<properties::Family> parse_families(std::string_view option, std::string_view list, Profile profile) {
-  const std::span<const properties::Family> known = properties::families(profile);
   std::vector<properties::Family> out;
   for (std::size_t start = 0; start <= list.size();) {
     const std::size_t comma = std::min(list.find(',', start), list.size());
     const std::string_view item = list.substr(start, comma - start);
-    const auto at = std::find_if(known.begin(), known.end(), [&](properties::Family f) { return item == properties::name(f); });
-    if (at == known.end()) {
+    const std::optional<properties::Family> family = parse_family(item, profile);
+    if (!family) {
       std::string names;
-      for (const properties::Family f : known) names += (names.empty() ? "" : ", ") + std::string(properties::name(f));
+      for (const properties::Family f : properties::families(profile))
+        names += (names.empty() ? "" : ", ") + std::string(properties::name(f));
       throw std::invalid_argument(std::string(option) + ": unknown family \"" + std::string(item) + "\"; the families of the " +
                                   properties::name(profile) + " profile are " + names);
     }
-    if (std::find(out.begin(), out.end(), *at) == out.end()) out.push_back(*at);
+    if (std::find(out.begin(), out.end(), *family) == out.end()) out.push_back(*family);
     start = comma + 1;
   }
   return out;
+}
+
+bool found_before(const Counterexample& a, const Counterexample& b) {
+  const auto order = [](const Counterexample& c) { return c.case_index ? *c.case_index + 1 : 0; };
+  return order(a) < order(b);
+}
+
+Outcome checked_outcome(const Verdict& verdict) {
+  const bool fails = verdict.counterexample ||
+                     std::any_of(verdict.families.begin(), verdict.families.end(), [](const FamilyResult& f) {
+                       return f.status == FamilyStatus::failed || f.status == FamilyStatus::unexpected_pass;
+                     });
+  return fails ? Outcome::does_not_conform : Outcome::conforms;
+}
+
+void mark_counterexample_family(Verdict& verdict) {
+  for (FamilyResult& f : verdict.families)
+    f.has_counterexample = verdict.counterexample && properties::name(f.family) == verdict.counterexample->family;
 }
 
 namespace {
@@ -290,7 +320,6 @@ class Run {
     c.expected = std::move(failure.expected);
     c.actual = std::move(failure.actual);
     c.difference = std::move(failure.difference);
-    verdict_.outcome = Outcome::does_not_conform;
     const bool first = !verdict_.counterexample;
     if (result) {
       result->status = FamilyStatus::failed;
@@ -581,14 +610,14 @@ Verdict check(Candidate& candidate, const Options& options) {
   }
   const auto start = std::chrono::steady_clock::now();
   Verdict verdict = unchecked(candidate.name(), options, "");
-  verdict.outcome = Outcome::conforms;
+  bool could_check = true;
   try {
     Run(candidate, options, verdict)();
   } catch (const BrokenCandidate& e) {
-    verdict.outcome = Outcome::cannot_check;
+    could_check = false;
     verdict.error = e.what();
   } catch (const ConformError& e) {
-    verdict.outcome = Outcome::cannot_check;
+    could_check = false;
     verdict.error = e.what();
   }
   // A family with no checked case did not pass: the run stopped (a counterexample, a fault) before it, or
@@ -596,6 +625,7 @@ Verdict check(Candidate& candidate, const Options& options) {
   for (FamilyResult& f : verdict.families)
     if (std::find(options.skip.begin(), options.skip.end(), f.family) != options.skip.end()) f.status = FamilyStatus::skipped;
     else if (f.status != FamilyStatus::failed) f.status = f.checked > 0 ? FamilyStatus::passed : FamilyStatus::not_reached;
+  verdict.outcome = could_check ? checked_outcome(verdict) : Outcome::cannot_check;
   verdict.elapsed = std::chrono::steady_clock::now() - start;
   return verdict;
 }

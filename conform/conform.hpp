@@ -74,6 +74,9 @@ struct Options {
   std::function<void(const Verdict&)> progress{};
 };
 
+// The family of `profile` of that name; nothing for another text.
+std::optional<properties::Family> parse_family(std::string_view name, Profile profile);
+
 // "A,B,..." → those families of `profile`, for --families and --skip-families. Throws std::invalid_argument
 // naming `option`, the unknown name and the known families.
 std::vector<properties::Family> parse_families(std::string_view option, std::string_view list, Profile profile);
@@ -92,6 +95,8 @@ class ConformError : public std::runtime_error {
 // The three verdicts, as the report names them: "conforms", "does not conform", "cannot check" (exit 0, 1, 2).
 enum class Outcome { conforms, does_not_conform, cannot_check };
 const char* name(Outcome outcome);
+// The outcome of that name; nothing for another text.
+std::optional<Outcome> parse_outcome(std::string_view text);
 
 // How one family fared: passed or failed; against an expectation file (conform/expect.hpp), a listed family
 // that failed is an expected_failure and one that passed an unexpected_pass; a family left out by
@@ -125,6 +130,10 @@ struct Counterexample {
   std::uint64_t shrinks() const { return shrink_path.empty() ? 0 : shrink_path.size() - 1; }
 };
 
+// Whether counterexample a was found before b: the lower case first, and a stored one (no case: the corpus is
+// replayed before any case) before every generated one.
+bool found_before(const Counterexample& a, const Counterexample& b);
+
 // One family's record: its cases drawn and checked (a drawn case is skipped when its first world has no
 // expected answer), its status, and its counterexample, if it failed.
 struct FamilyResult {
@@ -149,8 +158,19 @@ struct Verdict {
   std::optional<Counterexample> counterexample;
   std::string error;                             // why, when the outcome is cannot_check
   std::chrono::duration<double> elapsed{};       // wall time of the check
+  // The shards a verdict merged from their reports combines (conform/merge.hpp), in order; empty for a run's
+  // own verdict, whose shard is options.shard.
+  std::vector<std::uint64_t> merged_shards{};
   std::uint64_t checked() const { return cases - skipped; }
 };
+
+// conform's rule for the outcome of a verdict that could check, from the rest of it: does not conform when it has
+// a counterexample, or a family failed or passed unexpectedly; else conforms. A run (check), a run judged against
+// an expectation file (conform/expect.hpp) and the shards of a run merged (conform/merge.hpp) each decide by it.
+Outcome checked_outcome(const Verdict& verdict);
+
+// Sets FamilyResult::has_counterexample on the family Verdict::counterexample names, and on no other.
+void mark_counterexample_family(Verdict& verdict);
 
 // The worlds of cases 0 … cases − 1 of `seed` in `profile`, each as conform draws it (before any shrinking),
 // whatever the shard: for tools that hand out conform's worlds (cli/vectors.hpp).

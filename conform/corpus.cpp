@@ -1,7 +1,6 @@
 #include "conform/corpus.hpp"
 
-#include "formats/protocol.hpp"  // in_quotes
-
+#include "conform/json_reader.hpp"
 #include "formats/json_number.hpp"
 #include "formats/json_world.hpp"
 #include "formats/output_file.hpp"
@@ -36,63 +35,7 @@ void append_listed_world(std::string& out, const Circles& w, Numbers numbers = N
   formats::append_world(out, w, numbers, {.row = "\n    ", .field = ", ", .close = "\n  "});
 }
 
-// A JSON number as the double nearest to it, by the rules of formats/json_number.hpp (the parser has refused values
-// beyond the double range); nothing for any other value.
-std::optional<double> to_double(const nlohmann::json& x) {
-  if (x.is_number_float()) return x.get<double>();
-  if (x.is_number_unsigned()) return json_number::from_integer(x.get<std::uint64_t>());
-  if (x.is_number_integer()) return json_number::from_integer(x.get<std::int64_t>());
-  return std::nullopt;
-}
-
-class Reader {
- public:
-  explicit Reader(const std::string& source) : source_(source) {}
-
-  [[noreturn]] void fail(const std::string& reason) const { throw CorpusError(source_ + ": " + reason); }
-
-  std::string string(const nlohmann::json& x, std::string_view key) const {
-    if (!x.is_string()) fail("key " + in_quotes(key) + ": expected a string, found " + x.type_name());
-    return x.get<std::string>();
-  }
-
-  std::uint64_t integer(const nlohmann::json& x, std::string_view key) const {
-    if (!x.is_number_unsigned()) fail("key " + in_quotes(key) + ": expected an integer >= 0, found " + x.dump());
-    return x.get<std::uint64_t>();
-  }
-
-  double number(const nlohmann::json& x, const std::string& where, Numbers numbers = Numbers::finite) const {
-    std::optional<double> d = to_double(x);
-    if (!d && numbers == Numbers::any && x.is_string()) d = json_number::non_finite_token(x.get<std::string>());
-    if (!d) fail(where + ": expected a number, found " + x.dump());
-    return *d;
-  }
-
-  // A world of the resolved profile's C: finite doubles, r >= 0; or an answer, any numbers.
-  Circles world(const nlohmann::json& x, std::string_view key, Numbers numbers = Numbers::finite) const {
-    const std::string where = "key " + in_quotes(key);
-    if (!x.is_array()) fail(where + ": expected an array of circles [px, py, vx, vy, r], found " + x.type_name());
-    Circles w;
-    for (std::size_t k = 0; k < x.size(); ++k) {
-      const nlohmann::json& c = x[k];
-      const std::string circle = where + ": circle " + std::to_string(k);
-      if (!c.is_array() || c.size() != 5) fail(circle + ": expected 5 numbers [px, py, vx, vy, r]");
-      spec::CircleDoubles fields{};
-      for (std::size_t f = 0; f < 5; ++f)
-        fields[f] = number(c[f], circle + ", field " + spec::name(spec::Field(f)), numbers);
-      try {
-        if (numbers == Numbers::finite) spec::check_doubles(fields, k, spec::Radii::non_negative);
-      } catch (const spec::OutsideC& e) {
-        fail(where + ": " + e.what());
-      }
-      w.push_back(fields);
-    }
-    return w;
-  }
-
- private:
-  std::string source_;
-};
+using Reader = JsonReader<CorpusError>;
 
 }  // namespace
 
@@ -185,12 +128,7 @@ StoredCounterexample from_json(std::string_view text, const std::string& source)
       if (!d.contains(std::string(key))) read.fail("key \"difference\": missing key " + in_quotes(key));
     properties::Difference diff{};
     diff.circle = read.integer(d["circle"], "circle");
-    const std::string field = read.string(d["field"], "field");
-    std::optional<spec::Field> named;
-    for (std::size_t f = 0; f < 5; ++f)
-      if (field == spec::name(spec::Field(f))) named = spec::Field(f);
-    if (!named) read.fail("key \"difference\": field " + d["field"].dump() + " is not px, py, vx, vy or r");
-    diff.field = *named;
+    diff.field = read.field(d["field"], "key \"difference\"");
     diff.expected = read.number(d["expected"], "key \"difference\": expected");
     diff.actual = read.number(d["actual"], "key \"difference\": actual", Numbers::any);
     diff.decision = read.string(d["decision"], "decision");

@@ -90,34 +90,21 @@ Expectations read_expectations(const std::filesystem::path& file, Profile profil
 }
 
 void apply(Verdict& verdict, const Expectations& expectations) {
-  bool unexpected = false;
   const Counterexample* first = nullptr;
-  const auto earlier = [](const Counterexample& a, const Counterexample& b) {
-    return a.case_index.value_or(0) + (a.case_index ? 1 : 0) < b.case_index.value_or(0) + (b.case_index ? 1 : 0);
-  };
   for (FamilyResult& f : verdict.families) {
     const bool listed = expectations.find(f.family) != nullptr;
     if (listed && f.status == FamilyStatus::failed) f.status = FamilyStatus::expected_failure;
     else if (listed && f.status == FamilyStatus::passed) f.status = FamilyStatus::unexpected_pass;
-    f.has_counterexample = false;
-    if (f.status == FamilyStatus::unexpected_pass) unexpected = true;
-    if (f.status == FamilyStatus::failed && f.counterexample) {
-      unexpected = true;
-      if (!first || earlier(*f.counterexample, *first)) first = &*f.counterexample;
-    }
+    if (f.status == FamilyStatus::failed && f.counterexample && (!first || found_before(*f.counterexample, *first)))
+      first = &*f.counterexample;
   }
   // A stored counterexample of no family of the profile fails the run whatever the file says.
-  if (verdict.counterexample && verdict.counterexample->family.empty()) {
-    unexpected = true;
-    first = &*verdict.counterexample;
-  }
+  if (verdict.counterexample && verdict.counterexample->family.empty()) first = &*verdict.counterexample;
   std::optional<Counterexample> reported;
   if (first) reported = *first;
-  for (FamilyResult& f : verdict.families)
-    f.has_counterexample = reported && properties::name(f.family) == reported->family;
   verdict.counterexample = std::move(reported);
-  if (verdict.outcome != Outcome::cannot_check)
-    verdict.outcome = unexpected ? Outcome::does_not_conform : Outcome::conforms;
+  mark_counterexample_family(verdict);
+  if (verdict.outcome != Outcome::cannot_check) verdict.outcome = checked_outcome(verdict);
 }
 
 std::vector<std::string> unexpected_passes(const Verdict& verdict, const Expectations& expectations) {

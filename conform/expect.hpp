@@ -44,9 +44,10 @@ Expectations parse_expectations(std::string_view text, const std::filesystem::pa
 Expectations read_expectations(const std::filesystem::path& file, Profile profile);
 
 // Judges the verdict against the expectations: a listed family that failed becomes expected_failure, one that
-// passed unexpected_pass. The outcome (unless cannot_check) is then does_not_conform when a family failed
-// unexpectedly, passed unexpectedly or a stored counterexample of no family failed, else conforms;
-// Verdict::counterexample becomes the first unexpected one (the lowest case, a stored one first), or none.
+// passed unexpected_pass. Verdict::counterexample becomes the first unexpected one (found_before: the lowest case,
+// a stored one first), or none; then the outcome (unless cannot_check) is checked_outcome's: does_not_conform
+// when a family failed unexpectedly, passed unexpectedly or a stored counterexample of no family failed, else
+// conforms.
 void apply(Verdict& verdict, const Expectations& expectations);
 
 // The lines of an unexpected pass, one per family: "FAMILY: unexpected pass (N cases checked): delete its line,

@@ -1,28 +1,24 @@
-// The reports of `circles conform --report` (cli/report.hpp lists their keys) of the shards of one run, merged
-// into one by the rules of a verdict: `circles report merge`.
+// The reports of `circles conform --report` (conform/report.hpp) of the shards of one run, each read back into a
+// verdict and merged into one by conform's rule for a verdict (checked_outcome): `circles report merge`.
 #pragma once
 
-#include <stdexcept>
+#include "conform/report.hpp"
+
 #include <string>
 #include <vector>
 
 namespace circles::conform {
 
-// The format of a report, its key "format".
-inline constexpr const char* kReportFormat = "circles-conform-report/1";
-
-// A report that cannot be read or merged; what() names the file and why.
-class ReportError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
 // The reports of shards of one run (the same candidate, seed, level, profile, steps and shard count, each
-// shard once), as one: cases, skipped and per-family counts add up; the verdict is "cannot check" if any is,
-// else "does not conform" if any has a counterexample, the one of the lowest case index (a stored
-// counterexample, replayed before any case, lowest of all), or if a family failed or passed unexpectedly; a
-// family's status is the first of failed, expected failure, unexpected pass, passed, not reached, skipped that
-// it has in any shard. Throws ReportError. `names` name the texts in messages.
+// shard once), as one verdict: cases, skipped and per-family counts add up; the verdict is cannot check if any
+// is (with the first such report's error), else checked_outcome's: does not conform if it has a counterexample,
+// the one found first (found_before: the lowest case index, a stored counterexample lowest of all), or if a
+// family failed or passed unexpectedly; a family's status is the first of failed, expected failure, unexpected
+// pass, passed, not reached, skipped that it has in any shard, and its counterexample the one found first.
+// Throws ReportError. `names` name the texts in messages.
+Report merged_report(const std::vector<std::string>& texts, const std::vector<std::string>& names);
+
+// The merged report, as json_report writes it.
 std::string merge_reports(const std::vector<std::string>& texts, const std::vector<std::string>& names);
 
 }  // namespace circles::conform

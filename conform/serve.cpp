@@ -1,7 +1,7 @@
 #include "conform/serve.hpp"
 
 #include "formats/protocol.hpp"
-#include "impl/engine.hpp"  // impl::overflow_reason
+#include "impl/overflow.hpp"  // impl::overflow_reason
 
 #include <istream>
 #include <ostream>

@@ -11,12 +11,6 @@
 
 namespace circles::engines {
 
-StepOverflow::StepOverflow(std::uint64_t s, std::size_t i, spec::Field f)
-    : std::overflow_error("step " + std::to_string(s) + ", " + impl::overflow_reason(i, f)),
-      step(s),
-      index(i),
-      field(f) {}
-
 void Stepper::step() {
   if (const auto overflow = advance()) throw StepOverflow(steps_ + 1, overflow->index, overflow->field);
   ++steps_;

@@ -11,6 +11,7 @@
 
 #include "formats/protocol.hpp"
 #include "formats/trace_writer.hpp"  // formats::CircleSource
+#include "impl/overflow.hpp"  // impl::PositionOverflow
 #include "impl/pair_list.hpp"  // impl::EngineStats
 #include "spec/oracle.hpp"  // spec::Sequence
 #include "spec/outside_c.hpp"
@@ -28,16 +29,11 @@ namespace circles::engines {
 
 using spec::Circles;
 
-// A step whose next position is beyond the double range: circle `index`, coordinate `field` (px or py) of the
-// world the step would produce, w_step. what(): "step 31, " and then impl::overflow_reason, "circle 2, field
-// px: the position p + v/60 overflows to infinity".
-class StepOverflow : public std::overflow_error {
- public:
-  StepOverflow(std::uint64_t step, std::size_t index, spec::Field field);
-  std::uint64_t step;
-  std::size_t index;
-  spec::Field field;
-};
+// A step whose next position is beyond the double range: the position overflow of impl/ (impl/overflow.hpp),
+// which every stepper throws, the engines of impl/ and the oracles alike: step, circle `index` and coordinate
+// `field` (px or py) of the world the step would produce, w_step. what(): "step 31, " and then
+// impl::overflow_reason, "circle 2, field px: the position p + v/60 overflows to infinity".
+using StepOverflow = impl::PositionOverflow;
 
 // A world being stepped by one engine.
 class Stepper {

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <limits>
 #include <numeric>
 #include <string>
@@ -25,6 +26,20 @@ namespace {
 // reach + skin below this: positions stay finite through the horizon (a rounded |p| ≤ 2^1023·(1 + 2^-52) <
 // DBL_MAX), so steps update in place without checking for overflow.
 constexpr double kOverflowFreeReach = 0x1p1023;
+
+// The resolved profile's order on circles a and b given by their five keys (px, py, vx, vy, r), each decided by
+// exact comparisons of doubles: equal values (−0 and +0 included) pass to the next key; tie() decides when all
+// five are equal.
+template <class Tie>
+bool precedes_by_keys(std::initializer_list<const Buffer<double>*> keys, std::size_t a, std::size_t b, Tie tie) {
+  for (const Buffer<double>* key : keys) {
+    const double x = (*key)[a];
+    const double y = (*key)[b];
+    if (x < y) return true;
+    if (y < x) return false;
+  }
+  return tie();
+}
 
 }  // namespace
 
@@ -52,26 +67,8 @@ spec::Circles World::circles() const {
 }
 
 bool World::precedes(std::size_t a, std::size_t b) const noexcept {
-  // Each key is decided by exact comparisons of doubles; equal values (−0 and +0 included) pass to the next.
-  for (const Buffer<double>* key : {&px_, &py_, &vx_, &vy_, &r_}) {
-    const double x = (*key)[a];
-    const double y = (*key)[b];
-    if (x < y) return true;
-    if (y < x) return false;
-  }
-  return a < b;
+  return precedes_by_keys({&px_, &py_, &vx_, &vy_, &r_}, a, b, [a, b] { return a < b; });
 }
-
-std::string overflow_reason(std::size_t index, spec::Field field) {
-  return "circle " + std::to_string(index) + ", field " + spec::name(field) +
-         ": the position p + v/60 overflows to infinity";
-}
-
-PositionOverflow::PositionOverflow(std::uint64_t s, std::size_t i, spec::Field f)
-    : std::overflow_error("step " + std::to_string(s) + ", " + overflow_reason(i, f)),
-      step(s),
-      index(i),
-      field(f) {}
 
 // ── The engine ────────────────────────────────────────────────────────────────────────────────────────
 
@@ -121,13 +118,8 @@ void BasicEngine<A>::read_circles(std::span<const std::uint32_t> slots, std::siz
 template <class A>
 bool BasicEngine<A>::precedes(std::size_t a, std::size_t b) const noexcept {
   // World::precedes on slots: the same keys, then the circles' indices.
-  for (const Buffer<double>* key : {&now_.px, &now_.py, &now_.vx, &now_.vy, &now_.r}) {
-    const double x = (*key)[a];
-    const double y = (*key)[b];
-    if (x < y) return true;
-    if (y < x) return false;
-  }
-  return layout_.id()[a] < layout_.id()[b];
+  return precedes_by_keys({&now_.px, &now_.py, &now_.vx, &now_.vy, &now_.r}, a, b,
+                          [this, a, b] { return layout_.id()[a] < layout_.id()[b]; });
 }
 
 template <class A>
@@ -276,17 +268,10 @@ template class BasicEngine<ExactDecisionArithmetic>;
 // ── The all-pairs reference ───────────────────────────────────────────────────────────────────────────
 
 World step_all_pairs(const World& w) {
-  const std::size_t n = w.size();
-  std::vector<std::size_t> least(n);
-  std::iota(least.begin(), least.end(), std::size_t{0});
-  const auto px = w.px(), py = w.py(), r = w.r();
-  for (std::size_t a = 0; a < n; ++a)
-    for (std::size_t b = a + 1; b < n; ++b)
-      if (intersect_exact(px[a], py[a], r[a], px[b], py[b], r[b])) {
-        offer_contact(w, least, a, b);
-        offer_contact(w, least, b, a);
-      }
-  return step_from_contacts(w, least);
+  return step_over_pairs(w, [n = w.size()](const auto& visit) {
+    for (std::size_t a = 0; a < n; ++a)
+      for (std::size_t b = a + 1; b < n; ++b) visit(a, b);
+  });
 }
 
 World step_from_contacts(const World& w, std::span<const std::size_t> least) {

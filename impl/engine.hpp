@@ -18,10 +18,12 @@
 
 #include "impl/arithmetic.hpp"
 #include "impl/cell_layout.hpp"
+#include "impl/overflow.hpp"
 #include "spec/outside_c.hpp"
 
 #include <cstddef>
 #include <cstdint>
+#include <numeric>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -59,22 +61,6 @@ class World {
   friend class BasicEngine;
   friend World step_from_contacts(const World& w, std::span<const std::size_t> least);
   Buffer<double> px_, py_, vx_, vy_, r_;
-};
-
-// A step whose position overflows: at step `step` (the step that would make world `step` from world
-// `step` − 1), circle `index`'s coordinate `field` (px or py) would become ±infinity. The world is left
-// as it was before that step.
-// "circle <index>, field <field>: the position p + v/60 overflows to infinity": the reason every overflow of a
-// position is reported with: by the engines here, and by the registry's steppers, `circles serve` and
-// `circles check-trace`.
-std::string overflow_reason(std::size_t index, spec::Field field);
-
-class PositionOverflow : public std::overflow_error {
- public:
-  PositionOverflow(std::uint64_t step, std::size_t index, spec::Field field);
-  std::uint64_t step;
-  std::size_t index;
-  spec::Field field;
 };
 
 // The engine: circles kept in cell order (impl/broad_phase.hpp), a list of the pairs that can meet before
@@ -160,5 +146,23 @@ inline void offer_contact(const World& w, std::vector<std::size_t>& least, std::
 // then p ← advance_rounded(p, v). Throws PositionOverflow (step 1) for the first circle, then px before py,
 // whose position overflows, like DoubleEngine::step.
 World step_from_contacts(const World& w, std::span<const std::size_t> least);
+
+// The references' step over the pairs that `pairs` offers (step_all_pairs every pair, step_grid those of
+// neighbouring cells): pairs(visit) calls visit(a, b) once for each pair a < b it offers, which must include
+// every pair that intersects; each is tested with intersect_exact, each circle's least contact kept by
+// offer_contact, and step_from_contacts ends the step. Throws PositionOverflow (step 1) like it.
+template <class Pairs>
+World step_over_pairs(const World& w, Pairs pairs) {
+  std::vector<std::size_t> least(w.size());
+  std::iota(least.begin(), least.end(), std::size_t{0});
+  const auto px = w.px(), py = w.py(), r = w.r();
+  pairs([&](std::size_t a, std::size_t b) {
+    if (intersect_exact(px[a], py[a], r[a], px[b], py[b], r[b])) {
+      offer_contact(w, least, a, b);
+      offer_contact(w, least, b, a);
+    }
+  });
+  return step_from_contacts(w, least);
+}
 
 }  // namespace circles::impl

@@ -9,11 +9,7 @@
 // and h = 1 is taken.
 #include "impl/grid_reference.hpp"
 
-#include "impl/predicate.hpp"
-
 #include <array>
-#include <numeric>
-#include <vector>
 
 namespace circles::impl {
 
@@ -26,17 +22,10 @@ std::optional<double> grid_side(const World& w) {
 World step_grid(const World& w) {
   const std::optional<double> h = grid_side(w);
   if (!h) return step_all_pairs(w);
-  std::vector<std::size_t> least(w.size());
-  std::iota(least.begin(), least.end(), std::size_t{0});
-  const auto px = w.px(), py = w.py(), r = w.r();
-  for_each_neighbour_pair(w.size(), *h, [&](std::size_t k) { return std::array{px[k], py[k]}; },
-                          [&](std::size_t a, std::size_t b) {
-                            if (intersect_exact(px[a], py[a], r[a], px[b], py[b], r[b])) {
-                              offer_contact(w, least, a, b);
-                              offer_contact(w, least, b, a);
-                            }
-                          });
-  return step_from_contacts(w, least);
+  const auto px = w.px(), py = w.py();
+  return step_over_pairs(w, [&](const auto& visit) {
+    for_each_neighbour_pair(w.size(), *h, [&](std::size_t k) { return std::array{px[k], py[k]}; }, visit);
+  });
 }
 
 }  // namespace circles::impl

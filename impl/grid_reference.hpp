@@ -5,9 +5,9 @@
 //
 // It is deliberately not the engine it judges (impl/engine.hpp: levelled cells, inflated radii, pair lists over
 // many steps, threads). One level of square cells of side h ≥ twice the largest diameter, each circle in the
-// cell of its centre, and every pair of circles in the same or adjacent cells (3×3) tested with intersect_exact;
-// each circle's least contact by World::precedes and the update advance_rounded, both shared with
-// step_all_pairs (step_from_contacts). Where the grid's proof does not hold (no positive finite h, or a centre
+// cell of its centre, and every pair of circles in the same or adjacent cells (3×3); the pair test
+// intersect_exact, each circle's least contact by World::precedes and the update advance_rounded are
+// step_all_pairs' own (step_over_pairs). Where the grid's proof does not hold (no positive finite h, or a centre
 // too far out in cells) it is step_all_pairs itself.
 //
 // The grid itself (uniform_side, for_each_neighbour_pair) is generic over where the centres come from, so that

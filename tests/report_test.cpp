@@ -156,6 +156,27 @@ TEST(report, merges_the_reports_of_shards_into_the_unsharded_runs_cases_and_verd
             (std::vector<std::pair<std::string, int>>{{"lattice", 20}, {"tangency", 3}, {"zero-radius", 36}}));
 }
 
+// A report read back is the verdict it was written from: written again, the same text, the counterexample's
+// infinite answer and its printed text included.
+TEST(report, reads_a_report_back_into_the_verdict_it_was_written_from) {
+  const Verdict v = verdict_of(infinite_px);
+  ASSERT_EQ(v.outcome, Outcome::does_not_conform) << v.error;
+  const std::string written = json_report(v, counterexample_text(v));
+  const conform::Report read = conform::read_report(written, "r.json");
+  EXPECT_EQ(read.verdict.outcome, Outcome::does_not_conform);
+  ASSERT_TRUE(read.verdict.counterexample);
+  EXPECT_EQ(read.verdict.counterexample->actual[0][0], INFINITY);
+  EXPECT_EQ(read.text, counterexample_text(v));
+  EXPECT_EQ(json_report(read.verdict, read.text), written);
+  // Merged alone, a report keeps its verdict; a family the profile does not have is refused.
+  EXPECT_EQ(conform::merge_reports({written}, {"r.json"}), written);
+  nlohmann::json other = nlohmann::json::parse(written);
+  other["families"]["no-such-family"] = 1;
+  const auto e = thrown<conform::ReportError>([&] { conform::read_report(other.dump(), "r.json"); });
+  EXPECT_EQ(e ? std::string(e->what()) : "nothing thrown",
+            "r.json: \"families\": no-such-family is not a family of the resolved profile");
+}
+
 TEST(report, refuses_to_merge_reports_of_different_runs_or_a_shard_twice) {
   const nlohmann::json one = json_of(verdict_of(testing::right_step, 0, 2));
   nlohmann::json other_seed = one;
