@@ -122,10 +122,11 @@ run_random_and_a_scene_file_exclude_each_other)
   expect_exit 2 sh -c '"$1" run "$2" --random 5 >/dev/null 2>&1' sh "$circles" "$source_dir/scenes/default.json"
   ;;
 run_exits_2_when_an_allocation_fails)
-  # 200 MB of address space, and a world that needs about 512 MB: an allocation fails, and the program says so.
-  expect_exit 2 sh -c 'ulimit -v 200000 && exec "$1" run --random 2000000 --steps 1 --threads 1 >/dev/null 2>"$2"' sh \
+  # 200 MB of address space, and a world estimated at about 1 GB (a 1-step run of 2·10^6 circles fits in
+  # 200 MB): an allocation fails, and the program says so.
+  expect_exit 2 sh -c 'ulimit -v 200000 && exec "$1" run --random 4000000 --steps 1 --threads 1 >/dev/null 2>"$2"' sh \
     "$circles" "$dir/err"
-  grep -q '^circles: world too large for memory: 2000000 circles need about 512000000 bytes, and an allocation failed$' \
+  grep -q '^circles: world too large for memory: 4000000 circles need about 1024000000 bytes, and an allocation failed$' \
     "$dir/err" || fail "wrong message: $(cat "$dir/err")"
   ;;
 run_exits_2_leaving_no_file_when_the_trace_cannot_be_written)
