@@ -35,7 +35,7 @@ void append_listed_world(std::string& out, const Circles& w, Numbers numbers = N
   formats::append_world(out, w, numbers, {.row = "\n    ", .field = ", ", .close = "\n  "});
 }
 
-using Reader = JsonReader<CorpusError>;
+using CorpusReader = JsonReader<CorpusError>;
 
 }  // namespace
 
@@ -85,7 +85,7 @@ std::string to_json(const StoredCounterexample& c) {
 }
 
 StoredCounterexample from_json(std::string_view text, const std::string& source) {
-  const Reader read(source);
+  const CorpusReader read(source);
   nlohmann::json root;
   try {
     root = nlohmann::json::parse(text.begin(), text.end());

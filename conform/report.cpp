@@ -18,7 +18,7 @@ namespace {
 using formats::json_string;
 using formats::Numbers;
 namespace json_number = formats::json_number;
-using Reader = JsonReader<ReportError>;
+using ReportReader = JsonReader<ReportError>;
 
 // ── Writing ───────────────────────────────────────────────────────────────────────────────────────────
 
@@ -127,7 +127,7 @@ Options options_of(const nlohmann::json& r, const std::string& name) {
 
 // A counterexample, as counterexample_json writes it; a key left out or null keeps its default, so that a report
 // made by hand may give only "family" and "case". `text`, if given, gets its "text".
-Counterexample counterexample_of(const nlohmann::json& c, const Reader& read, std::string* text = nullptr) {
+Counterexample counterexample_of(const nlohmann::json& c, const ReportReader& read, std::string* text = nullptr) {
   const auto given = [&](const char* key) { return c.contains(key) && !c.at(key).is_null(); };
   Counterexample out;
   if (given("family")) out.family = read.string(c.at("family"), "family");
@@ -178,7 +178,7 @@ std::vector<FamilyResult> families_of(const nlohmann::json& r, Profile profile, 
   }
   if (r.at("family_status").size() != read.size())
     throw ReportError(name + ": \"family_status\": expected a status for each of the \"families\"");
-  const Reader reader(name + ": \"counterexamples\"");
+  const ReportReader reader(name + ": \"counterexamples\"");
   for (const nlohmann::json& c : r.value("counterexamples", nlohmann::json::array())) {
     Counterexample counterexample = counterexample_of(c, reader);
     const std::optional<properties::Family> f = parse_family(counterexample.family, profile);
@@ -266,7 +266,7 @@ Report read_report(std::string_view text, const std::string& name) {
   v.replayed = r.at("replayed").get<std::uint64_t>();
   v.families = families_of(r, v.options.profile, name);
   if (r.at("counterexample").is_object())
-    v.counterexample = counterexample_of(r.at("counterexample"), Reader(name + ": \"counterexample\""), &report.text);
+    v.counterexample = counterexample_of(r.at("counterexample"), ReportReader(name + ": \"counterexample\""), &report.text);
   mark_counterexample_family(v);
   v.elapsed = std::chrono::duration<double>(r.at("elapsed_seconds").get<double>());
   return report;
