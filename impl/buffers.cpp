@@ -1,6 +1,8 @@
 #include "impl/buffers.hpp"
 
+#include <array>
 #include <cstdint>
+#include <mutex>
 #include <new>
 
 #if defined(__linux__)
@@ -12,15 +14,65 @@ namespace {
 
 std::size_t whole_huge_pages(std::size_t bytes) noexcept { return (bytes + kHugePage - 1) & ~(kHugePage - 1); }
 
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+// Mappings given back, kept for the next request of the same size: a rebuild frees a sort's scratch and then
+// asks for a gather's scratch of the same size (8 bytes a circle each), and a kept mapping is memory whose
+// pages are backed already, where a new one costs a zeroed page at each first write (on a virtual machine,
+// the host's fault too). A request that no kept mapping fits gives back every kept one before it maps anew,
+// so a mapping waits only for the request after it, and the peak of memory is what it would be without them.
+class Kept {
+ public:
+  // A kept mapping of exactly `size` bytes, or nullptr after giving back every kept one.
+  void* take(std::size_t size) noexcept {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    for (std::size_t k = 0; k < count_; ++k)
+      if (blocks_[k].size == size) {
+        void* const block = blocks_[k].block;
+        blocks_[k] = blocks_[--count_];
+        return block;
+      }
+    for (std::size_t k = 0; k < count_; ++k) munmap(blocks_[k].block, blocks_[k].size);
+    count_ = 0;
+    return nullptr;
+  }
+  // Keeps the mapping, or gives it back when kKept are kept already.
+  void give(void* block, std::size_t size) noexcept {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (count_ == kKept) {
+      munmap(block, size);
+      return;
+    }
+    blocks_[count_++] = {block, size};
+  }
+
+ private:
+  // A rebuild frees at most a sort's two scratch lists and a gather's scratch before it asks again.
+  static constexpr std::size_t kKept = 4;
+  struct Block {
+    void* block;
+    std::size_t size;
+  };
+  std::mutex mutex_;
+  std::array<Block, kKept> blocks_{};
+  std::size_t count_ = 0;
+};
+
+Kept& kept() noexcept {
+  static Kept* const k = new Kept;  // never destroyed: a static Buffer may give its block back at exit
+  return *k;
+}
+#endif
+
 }  // namespace
 
 void* allocate_buffer(std::size_t bytes) {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
-  if (bytes >= kHugePage) {
+  if (bytes >= kMappedFrom) {
     // A mapping one huge page longer than needed has a kHugePage-aligned start within its first huge page;
     // what lies before that start and after the block's whole huge pages is given back at once.
     const std::size_t size = whole_huge_pages(bytes);
     if (size < bytes || size + kHugePage < size) throw std::bad_alloc();
+    if (void* const block = kept().take(size)) return block;
     void* const mapped = mmap(nullptr, size + kHugePage, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
     if (mapped == MAP_FAILED) throw std::bad_alloc();
     const auto begin = reinterpret_cast<std::uintptr_t>(mapped);
@@ -38,8 +90,8 @@ void* allocate_buffer(std::size_t bytes) {
 
 void deallocate_buffer(void* block, std::size_t bytes) noexcept {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
-  if (bytes >= kHugePage) {
-    munmap(block, whole_huge_pages(bytes));
+  if (bytes >= kMappedFrom) {
+    kept().give(block, whole_huge_pages(bytes));
     return;
   }
 #endif

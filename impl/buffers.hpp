@@ -7,10 +7,12 @@
 // (/sys/kernel/mm/transparent_hugepage/enabled: "madvise"), but only for the 2 MiB-aligned pieces of a
 // mapping: malloc's large blocks start 16 bytes into a mapping at any 4 KiB boundary, so the advice reached
 // only their inner whole 2 MiB pieces, and an 8 MB column still took about 500 small faults at its ends.
-// Buffer<T> is a std::vector whose allocator maps blocks of kHugePage and more on their own, aligned to
+// Buffer<T> is a std::vector whose allocator maps blocks of kMappedFrom and more on their own, aligned to
 // kHugePage and rounded up to a whole number of them, advised before anything is written: one fault per
 // 2 MiB, and fewer TLB misses in the steps' gathers. Smaller blocks come from operator new, as std::allocator's
-// do. The mapping and the advice change no value: a kernel that ignores the advice (or a system without
+// do. A mapping given back waits for the next request of a mapping: it serves it when it is of its size,
+// with its pages backed already, and is unmapped otherwise (buffers.cpp, Kept). The mapping and the advice
+// change no value: a kernel that ignores the advice (or a system without
 // mmap, where every block comes from operator new) gives the same results.
 #pragma once
 
@@ -22,14 +24,18 @@
 namespace circles::impl {
 
 namespace detail {
-// kHugePage bytes or more: a mapping of its own, aligned and advised; less: operator new. `bytes` must be the
+// kMappedFrom bytes or more: a mapping of its own, aligned and advised; less: operator new. `bytes` must be the
 // same in both calls of a block.
 void* allocate_buffer(std::size_t bytes);
 void deallocate_buffer(void* block, std::size_t bytes) noexcept;
 }  // namespace detail
 
-// x86-64's huge page, and the least block that gets a mapping of its own.
+// x86-64's huge page.
 inline constexpr std::size_t kHugePage = std::size_t{1} << 21;
+// The least block that gets a mapping of its own: from operator new, a block of 512 KiB costs 128 faults of
+// 4 KiB pages as it is first written (a slot mark a circle, at 10^6 circles, was 256 of them); mapped, it
+// costs one fault and at most 1.5 MiB of memory beyond the block.
+inline constexpr std::size_t kMappedFrom = kHugePage / 4;
 
 template <class T>
 class BufferAllocator {

@@ -47,9 +47,11 @@ void CellLayout::arrange(unsigned threads, std::uint64_t horizon, const Buffer<d
   if (!sorted) {
     // least_ is the identity between steps, so it stays.
     (gather(threads, columns), ...);
+    // The keys before the id: their scratch is the size of the columns' (8 bytes a circle), which the
+    // buffers keep from the columns' gather (impl/buffers.hpp) for a request of that size next.
+    gather(threads, Columns<CellKey>{next_key_, {&key_}});
     scratch_id_.resize(n);
     gather(threads, Columns<std::uint32_t>{scratch_id_, {&id_}});
-    gather(threads, Columns<CellKey>{next_key_, {&key_}});
   }
   index_levels(key_, level_begin_, levels_);
   // The sort's scratch (the permutation and the old keys, 12 bytes a circle) is given back before the list

@@ -228,18 +228,26 @@ void BasicEngine<A>::rebuild() {
   // 2^1023 − reach, no position can overflow (a rounded |p| ≤ 2^1023·(1 + 2^-52) < DBL_MAX), and steps
   // update in place.
   overflow_free_ = reach + skin_for(horizon + 1, vmax, reach, A::drift) < kOverflowFreeReach;
-  // Each radius widened by `widen` (outward, so at least r + widen exactly), or as it is for 0; per chunk.
+  // Each radius widened by `widen` > 0 (outward, so at least r + widen exactly); per chunk.
   const auto widened = [&](Buffer<double>& to, double widen) {
     to.resize(n);
     for_each_chunk(chunks, threads_, [&](std::size_t c) {
       for (std::size_t t = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1); t < e; ++t)
-        to[t] = widen > 0 ? outward_upper(now_.r[t], widen) : now_.r[t];
+        to[t] = outward_upper(now_.r[t], widen);
     });
   };
-  widened(inflated_, pad);
-  // The slots in cell order, every column gathered with them.
-  layout_.arrange(threads_, horizon, now_.px, now_.py, inflated_,
-                  impl::Columns<double>{scratch_, {&now_.px, &now_.py, &now_.vx, &now_.vy, &now_.r, &inflated_}});
+  // The slots in cell order, every column gathered with them. A pad of 0 (a list for this world alone, by an
+  // arithmetic without slack) inflates nothing: the radii serve as they are, with no copy to write and gather.
+  if (pad > 0) {
+    widened(inflated_, pad);
+    layout_.arrange(threads_, horizon, now_.px, now_.py, inflated_,
+                    impl::Columns<double>{scratch_, {&now_.px, &now_.py, &now_.vx, &now_.vy, &now_.r, &inflated_}});
+  } else {
+    Buffer<double>().swap(inflated_);
+    layout_.arrange(threads_, horizon, now_.px, now_.py, now_.r,
+                    impl::Columns<double>{scratch_, {&now_.px, &now_.py, &now_.vx, &now_.vy, &now_.r}});
+  }
+  const Buffer<double>& inflated = pad > 0 ? inflated_ : now_.r;
   // Each pair's first step from its gap (impl/pair_list.hpp), on the radii widened by the slack alone.
   // (With no slack, the exact arithmetic's, the padded radii are the radii: no copy.)
   if (slack > 0) widened(padded_, slack);
@@ -247,8 +255,8 @@ void BasicEngine<A>::rebuild() {
   // disjoint at the inflated radii means never within the horizon, and intersecting at the padded ones means
   // from step 0.
   const double *px = now_.px.data(), *py = now_.py.data(), *r = slack > 0 ? padded_.data() : now_.r.data(),
-               *ri = inflated_.data();
-  layout_.list(stats_, options_, threads_, horizon, now_.px, now_.py, inflated_, Lister{px, py, r, ri, step, horizon});
+               *ri = inflated.data();
+  layout_.list(stats_, options_, threads_, horizon, now_.px, now_.py, inflated, Lister{px, py, r, ri, step, horizon});
 }
 
 template <class A>

@@ -326,7 +326,8 @@ class PairList {
   struct Chunk {
     // pairs[0, size): by block, then first step's bucket, then first slot. The vector is the room (its
     // elements uninitialized until written), so that a build writes its pairs without calling out of its
-    // loop to append; the room starts at the last build's count and an eighth, and grows by half.
+    // loop to append; the room starts at the last build's count and an eighth (a pair per slot without one),
+    // and grows by half.
     Buffer<ListedPair> pairs;
     std::size_t size = 0;
     Buffer<std::uint32_t> starts;  // pairs of block k, bucket q: [starts[k·K + q], starts[k·K + q + 1])

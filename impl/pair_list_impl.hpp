@@ -53,7 +53,10 @@ inline void PairList::build(const CellGrid& grid, const CellView& view, unsigned
     const std::size_t begin = chunk_begin(n, chunks, c), end = chunk_begin(n, chunks, c + 1);
     chunk.starts.assign((end - begin + kBlockSlots - 1) / kBlockSlots * kBuckets + 1, 0);
     std::uint32_t* const count = chunk.starts.data() + 1;
-    const std::size_t room = chunk.size + chunk.size / 8 + 1024;
+    // The room: the last build's count and an eighth; with no count to go by (a first build, or a last one
+    // that listed nothing here), a pair per slot, which costs address space only (a Buffer's pages are backed
+    // as they are written), so that a first list does not grow by copies through new memory.
+    const std::size_t room = chunk.size > 0 ? chunk.size + chunk.size / 8 + 1024 : std::max<std::size_t>(end - begin, 1024);
     if (found.size() < room) {
       found.clear();  // nothing in it is kept: the build writes every pair again
       found.resize(room);
@@ -123,6 +126,8 @@ inline void PairList::build(const CellGrid& grid, const CellView& view, unsigned
     const std::size_t begin = chunk_begin(n, chunks, c);
     Buffer<ListedPair>& pairs = chunk.pairs;
     for (std::size_t k = 1; k < chunk.starts.size(); ++k) chunk.starts[k] += chunk.starts[k - 1];
+    // A horizon of 0 has one first step, 0: each block's run is in bucket order as it was found.
+    if (horizon == 0) return;
     std::vector<std::uint32_t> at(chunk.starts.begin(), chunk.starts.end() - 1);
     Buffer<ListedPair> run;
     for (std::size_t k = 0; k < blocks; ++k) {
@@ -159,6 +164,9 @@ std::size_t PairList::least_contacts(std::uint64_t j, unsigned threads, Buffer<s
   for_each_chunk(chunks, threads, [&](std::size_t c) {
     Chunk& chunk = chunks_[c];
     touched[c].clear();
+    // Room for every slot of the chunk, which costs address space only until it is written: the list then
+    // never grows by copies through new memory (a first step's touched slots are a third of a dense scene).
+    touched[c].reserve(chunk_begin(slots_, chunks, c + 1) - chunk_begin(slots_, chunks, c));
     chunk.offers.clear();
     const std::size_t end = chunk_begin(slots_, chunks, c + 1);
     const std::size_t blocks = (chunk.starts.size() - 1) / kBuckets;

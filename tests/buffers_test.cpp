@@ -25,11 +25,39 @@ TEST(buffers, a_buffer_grown_past_2_mib_starts_on_a_huge_page_and_keeps_its_elem
   for (std::size_t k = 0; k < 1000; ++k) ASSERT_EQ(v[k], 7 + k);
   for (std::size_t k = 1000; k < v.size(); ++k) ASSERT_EQ(v[k], 0u);
   // Blocks just at and just under the threshold, and an odd size above it (rounded up to whole huge pages).
-  Buffer<char> at(kHugePage), under(kHugePage - 1, 'u'), odd(3 * kHugePage + 12345, 'o');
+  Buffer<char> at(kHugePage), under(kHugePage - 1, 'u'), odd(3 * kHugePage + 12345, 'o'), mapped(kMappedFrom);
   EXPECT_EQ(offset_in_huge_page(at.data()), 0u);
+  EXPECT_EQ(offset_in_huge_page(mapped.data()), 0u);
   EXPECT_EQ(offset_in_huge_page(odd.data()), 0u);
   EXPECT_EQ(odd.back(), 'o');
   EXPECT_EQ(under.back(), 'u');
+}
+
+TEST(buffers, a_mapping_given_back_serves_the_next_request_of_its_size_as_it_was_left) {
+  BufferAllocator<unsigned char> allocator;
+  const std::size_t bytes = 3 * kHugePage;
+  unsigned char* const first = allocator.allocate(bytes);
+  first[0] = 42;
+  first[bytes - 1] = 43;
+  allocator.deallocate(first, bytes);
+  unsigned char* const again = allocator.allocate(bytes);
+  EXPECT_EQ(again, first);
+  // Its pages as they were: a new mapping would read 0.
+  EXPECT_EQ(again[0], 42);
+  EXPECT_EQ(again[bytes - 1], 43);
+  allocator.deallocate(again, bytes);
+}
+
+TEST(buffers, a_request_of_another_size_gets_a_new_mapping_not_a_kept_one) {
+  BufferAllocator<unsigned char> allocator;
+  unsigned char* const kept = allocator.allocate(3 * kHugePage);
+  kept[0] = 42;
+  allocator.deallocate(kept, 3 * kHugePage);
+  // Two huge pages: a kept mapping of three would be given back later as two, and lose one.
+  unsigned char* const other = allocator.allocate(2 * kHugePage);
+  EXPECT_EQ(other[0], 0);
+  EXPECT_EQ(offset_in_huge_page(other), 0u);
+  allocator.deallocate(other, 2 * kHugePage);
 }
 
 TEST(buffers, elements_that_own_memory_are_moved_not_lost) {
