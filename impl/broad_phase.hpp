@@ -255,12 +255,16 @@ void visit_neighbourhood_runs(const CellGrid& grid, const CellView& view, std::s
   const bool band_top = row == G::kBandRows - 1;
   // A cursor moved forward to the first key ≥ first. Each cursor's `first` only grows with a's key (shown at
   // each use), so a cursor moves over the whole view once: linear in all.
-  const auto seek = [&](std::size_t& at, bool& ready, CellKey first) {
+  const auto seek = [&](std::size_t& cursor_at, bool& ready, CellKey first) {
+    // A local, stored once: a key is a std::uint64_t, the type a std::size_t is, so the compiler must assume
+    // that each key read may alias the cursor, and would store it at every step of the loop.
+    std::size_t at = cursor_at;
     if (!ready) {
       at = static_cast<std::size_t>(std::lower_bound(view.key.begin(), view.key.end(), first) - view.key.begin());
       ready = true;
     }
     while (at < n && view.key[at] < first) ++at;
+    cursor_at = at;
     return at;
   };
   // a's column: the slots after a to the end of the next row, if the band has one.

@@ -15,25 +15,30 @@ namespace {
 std::size_t whole_huge_pages(std::size_t bytes) noexcept { return (bytes + kHugePage - 1) & ~(kHugePage - 1); }
 
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
-// Mappings given back, kept for the next request of the same size: a rebuild frees a sort's scratch and then
-// asks for a gather's scratch of the same size (8 bytes a circle each), and a kept mapping is memory whose
-// pages are backed already, where a new one costs a zeroed page at each first write (on a virtual machine,
-// the host's fault too). A request that no kept mapping fits gives back every kept one before it maps anew,
-// so a mapping waits only for the request after it, and the peak of memory is what it would be without them.
+// Mappings given back, kept for the requests after them: a rebuild frees a sort's scratch and then asks for a
+// gather's scratch, a pair list and a permutation, and a kept mapping is memory whose pages are backed
+// already, where a new one costs a zeroed page at each first write (on a virtual machine, the host's fault
+// too). A request takes the smallest kept mapping that holds it, its tail beyond the request unmapped; one
+// that none holds gives back every kept mapping before it maps anew. So the buffers' memory and the kept
+// mappings together never exceed the most the buffers held at a new mapping: the peak is what it would be
+// without them.
 class Kept {
  public:
-  // A kept mapping of exactly `size` bytes, or nullptr after giving back every kept one.
+  // A kept mapping of `size` bytes (a multiple of kHugePage), or nullptr after giving back every kept one.
   void* take(std::size_t size) noexcept {
     const std::lock_guard<std::mutex> lock(mutex_);
+    std::size_t best = count_;
     for (std::size_t k = 0; k < count_; ++k)
-      if (blocks_[k].size == size) {
-        void* const block = blocks_[k].block;
-        blocks_[k] = blocks_[--count_];
-        return block;
-      }
-    for (std::size_t k = 0; k < count_; ++k) munmap(blocks_[k].block, blocks_[k].size);
-    count_ = 0;
-    return nullptr;
+      if (blocks_[k].size >= size && (best == count_ || blocks_[k].size < blocks_[best].size)) best = k;
+    if (best == count_) {
+      for (std::size_t k = 0; k < count_; ++k) munmap(blocks_[k].block, blocks_[k].size);
+      count_ = 0;
+      return nullptr;
+    }
+    const Block taken = blocks_[best];
+    blocks_[best] = blocks_[--count_];
+    if (taken.size > size) munmap(static_cast<char*>(taken.block) + size, taken.size - size);
+    return taken.block;
   }
   // Keeps the mapping, or gives it back when kKept are kept already.
   void give(void* block, std::size_t size) noexcept {
@@ -46,7 +51,7 @@ class Kept {
   }
 
  private:
-  // A rebuild frees at most a sort's two scratch lists and a gather's scratch before it asks again.
+  // A rebuild frees at most a pair list, a sort's two scratch lists and a gather's scratch before it asks again.
   static constexpr std::size_t kKept = 4;
   struct Block {
     void* block;

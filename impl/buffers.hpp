@@ -10,9 +10,9 @@
 // Buffer<T> is a std::vector whose allocator maps blocks of kMappedFrom and more on their own, aligned to
 // kHugePage and rounded up to a whole number of them, advised before anything is written: one fault per
 // 2 MiB, and fewer TLB misses in the steps' gathers. Smaller blocks come from operator new, as std::allocator's
-// do. A mapping given back waits for the next request of a mapping: it serves it when it is of its size,
-// with its pages backed already, and is unmapped otherwise (buffers.cpp, Kept). The mapping and the advice
-// change no value: a kernel that ignores the advice (or a system without
+// do. A mapping given back is kept for the next requests, which it serves with its pages backed already when
+// it holds them, and is unmapped at the first request that no kept mapping holds (buffers.cpp, Kept). The
+// mapping and the advice change no value: a kernel that ignores the advice (or a system without
 // mmap, where every block comes from operator new) gives the same results.
 #pragma once
 

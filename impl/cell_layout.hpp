@@ -25,6 +25,7 @@
 #include <cstdint>
 #include <initializer_list>
 #include <numeric>
+#include <optional>
 #include <span>
 #include <type_traits>
 #include <utility>
@@ -132,8 +133,26 @@ class CellLayout {
     rebuild_at_ = stats.steps + horizon + 1;
   }
 
-  // The pairs {i, j}, i < j (circle indices) of the kept list, once each.
-  std::vector<CandidatePair> listed() const { return listed_pairs(pairs_, id_); }
+  // After arrange(), for a horizon of 0, instead of list(): no list is written, since only this step would
+  // read it; the step finds its contacts during the walk list() would make (PairList::contacts_now), with the
+  // same `lister`, testing the pairs that list would hold. The columns must stay where they are until then.
+  void list_in_step(EngineStats& stats, const EngineOptions& options, const Buffer<double>& x,
+                    const Buffer<double>& y, const Buffer<double>& inflated, const Lister& lister) {
+    in_step_ = InStep{CellView{key_, x, y, inflated, levels_, level_begin_}, lister,
+                      options.keep_pairs && options.horizon == 0 && schedule_.horizon() == 0};
+    built_at_ = stats.steps;
+    ++stats.rebuilds;
+    rebuild_at_ = stats.steps + 1;
+  }
+
+  // The pairs {i, j}, i < j (circle indices) of the kept list, once each; after list_in_step(), of the list it
+  // does not write.
+  std::vector<CandidatePair> listed() const {
+    if (!in_step_) return listed_pairs(pairs_, id_);
+    PairList list;
+    list.build(grid_, in_step_->view, 1, 0, in_step_->lister);
+    return listed_pairs(list, id_);
+  }
 
  private:
   // column[t] ← column[permutation[t]] for every registered column, per chunk. Values that own memory (GMP
@@ -141,6 +160,14 @@ class CellLayout {
   template <class T>
   void gather(unsigned threads, const Columns<T>& set);
 
+  // What list_in_step() leaves for the step: the view and lister of the walk, and whether the schedule learns
+  // from the step's tests (as list() lets it from a list of its own horizon).
+  struct InStep {
+    CellView view;
+    Lister lister;
+    bool learn;
+  };
+  std::optional<InStep> in_step_;
   Buffer<std::uint32_t> id_, least_, permutation_, scratch_id_;
   std::vector<Buffer<std::uint32_t>> touched_;
   Buffer<CellKey> key_, next_key_;  // by the inflated radii of the last rebuild

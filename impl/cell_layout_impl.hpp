@@ -15,7 +15,16 @@ void CellLayout::step(EngineStats& stats, unsigned threads, Rebuild&& rebuild, M
   if (due(stats.steps)) rebuild();
   std::size_t contacts = 0, tested = 0;
   const std::uint64_t j = stats.steps - built_at_;  // this step's place in the list's horizon
-  if (!pairs_.quiet(j)) {
+  if (in_step_) {
+    auto test = make_test();
+    contacts = pairs_.contacts_now(grid_, in_step_->view, threads, in_step_->lister, least_, touched_, tested,
+                                   test.intersect, test.precedes);
+    // The counts list() and the contacts of its list would give.
+    stats.pairs_listed += tested;
+    if (tested == 0) ++stats.quiet_steps;
+    if (in_step_->learn) schedule_.update(tested, id_.size());
+    in_step_.reset();
+  } else if (!pairs_.quiet(j)) {
     auto test = make_test();
     contacts = pairs_.least_contacts(j, threads, least_, touched_, tested, test.intersect, test.precedes,
                                      test.prefetch);

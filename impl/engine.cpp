@@ -2,7 +2,8 @@
 //
 // A step from world t (circles in cell order, a list of the pairs that can meet, impl/pair_list.hpp):
 //   rebuild   when the list's horizon has ended: the skin for the next horizon, keys of the inflated circles,
-//             CellOrder's permutation and one gather, then the broad phase fills the list (parallel);
+//             CellOrder's permutation and one gather, then the broad phase fills the list (parallel; a list
+//             of horizon 0 is not written: the contacts below take its pairs as the broad phase finds them);
 //   contacts  each listed pair tested with the arithmetic's intersect; each slot's least contact (parallel);
 //   advance   v ← v[least] for the slots that have a contact, then p ← update(p, v) in place (parallel);
 //             where the rebuild could not prove that no position overflows, it checks and restores world t.
@@ -256,7 +257,12 @@ void BasicEngine<A>::rebuild() {
   // from step 0.
   const double *px = now_.px.data(), *py = now_.py.data(), *r = slack > 0 ? padded_.data() : now_.r.data(),
                *ri = inflated.data();
-  layout_.list(stats_, options_, threads_, horizon, now_.px, now_.py, inflated, Lister{px, py, r, ri, step, horizon});
+  const Lister lister{px, py, r, ri, step, horizon};
+  // A list for this world alone is read once, by this step: its pairs are tested as the walk finds them.
+  if (horizon == 0)
+    layout_.list_in_step(stats_, options_, now_.px, now_.py, inflated, lister);
+  else
+    layout_.list(stats_, options_, threads_, horizon, now_.px, now_.py, inflated, lister);
 }
 
 template <class A>

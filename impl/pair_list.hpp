@@ -20,6 +20,7 @@
 #include "impl/predicate.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -260,6 +261,9 @@ struct ListedPair {
   std::uint32_t a, b, first;
 };
 
+template <class Intersect, class Precedes>
+struct ChunkContacts;
+
 // Pairs of slots grouped by the chunk (impl/contacts.hpp) of their first slot, so that each thread offers
 // contacts to its own slots; within a chunk by blocks of kBlockSlots slots (by first slot), so that a step
 // reads each block's circles while they are in cache; within a block by first step, so that a step reaches
@@ -302,6 +306,15 @@ class PairList {
                              std::vector<Buffer<std::uint32_t>>& touched, std::size_t& tested,
                              Intersect&& intersect, Precedes&& precedes, Prefetch&& prefetch);
 
+  // A step's contacts without a list, for a list of horizon 0, which only the step of the world it is built in
+  // would read: the walk build() makes over `view` with `first`, each pair that list would hold (its first step
+  // 0) tested as it is found, with least_contacts' result and counts, and lonely() as the list would give it.
+  // Afterwards the list is empty; tests() gives the pairs tested.
+  template <class Intersect, class Precedes>
+  std::size_t contacts_now(const CellGrid& grid, const CellView& view, unsigned threads, const Lister& first,
+                           Buffer<std::uint32_t>& least, std::vector<Buffer<std::uint32_t>>& touched,
+                           std::size_t& tested, Intersect&& intersect, Precedes&& precedes);
+
   std::size_t size() const noexcept { return size_; }
   // The pairs tested over the whole horizon: Σ (H + 1 − first step).
   std::size_t tests() const noexcept { return tests_; }
@@ -335,6 +348,19 @@ class PairList {
   };
   // The chunk that holds `slot`.
   std::size_t chunk_of(std::size_t slot) const noexcept;
+  // Chunk c's tester for a step: its touched slots and offers cleared, room made for them.
+  template <class Intersect, class Precedes>
+  ChunkContacts<Intersect, Precedes> chunk_contacts(std::size_t c, Buffer<std::uint32_t>& least,
+                                                    std::vector<Buffer<std::uint32_t>>& touched,
+                                                    const Intersect& intersect, const Precedes& precedes);
+  // After the parallel part of a step, whose chunks tested and found counts[c] = {pairs tested, pairs
+  // intersecting}: the chunks' offers to later chunks' slots, then the pairs of `global` due at step j. Sets
+  // `tested` to all the pairs tested, and returns all the intersecting ones.
+  template <class Intersect, class Precedes>
+  std::size_t offer_the_rest(std::span<const std::array<std::size_t, 2>> counts, std::span<const ListedPair> global,
+                             std::uint64_t j, Buffer<std::uint32_t>& least,
+                             std::vector<Buffer<std::uint32_t>>& touched, std::size_t& tested,
+                             Intersect&& intersect, Precedes&& precedes);
 
   std::vector<Chunk> chunks_;
   Buffer<ListedPair> global_;  // pairs with a global slot, tested from their first step every step

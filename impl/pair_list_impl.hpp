@@ -11,6 +11,7 @@
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace circles::impl {
@@ -21,6 +22,54 @@ inline std::size_t PairList::chunk_of(std::size_t slot) const noexcept {
   while (guess + 1 < c && chunk_begin(slots_, c, guess + 1) <= slot) ++guess;
   while (guess > 0 && chunk_begin(slots_, c, guess) > slot) --guess;
   return guess;
+}
+
+// The broad phase's walk over the slots [begin, end) of `view`, in ascending order: for each slot a, the
+// candidates b that visit_neighbourhood_runs offers (impl/broad_phase.hpp) and lister.near(a, b) keeps, handed
+// to pair(a, b) in the order found. The candidates of a near enough to ask are gathered without a branch from
+// all of a's runs, then handed over together: one loop over them per a, not one per run (its exit mispredicts
+// about once per loop).
+template <class Pair>
+void walk_near(const CellGrid& grid, const CellView& view, std::size_t begin, std::size_t end, const Lister& lister,
+               Pair&& pair) {
+  const std::size_t n = view.key.size();
+  NeighbourCursor cursor;
+  constexpr std::size_t kKept = 64;
+  std::uint32_t kept[kKept];
+  for (std::size_t a = begin; a < end; ++a) {
+    const auto hand_over = [&](std::size_t held) {
+      for (std::size_t k = 0; k < held; ++k) pair(a, std::size_t{kept[k]});
+    };
+    std::size_t kept_so_far = 0;
+    visit_neighbourhood_runs(grid, view, a, cursor, [&](std::size_t from, CellKey last) {
+      // A copy of the lister per run, in registers: the callers' marks are char stores, which may alias
+      // anything, so values in memory would be read again for every candidate.
+      const Lister near = lister;
+      const CellKey* const key = view.key.data();
+      std::size_t held = kept_so_far, b = from;
+      for (; b < n && key[b] <= last; ++b) {
+        kept[held] = static_cast<std::uint32_t>(b);
+        held += near.near(a, b);
+        if (held == kKept) [[unlikely]] {
+          hand_over(held);
+          held = 0;
+        }
+      }
+      kept_so_far = held;
+      return b;  // the run ended: a larger key, or the view's end
+    });
+    hand_over(kept_so_far);
+  }
+}
+
+// Global slots (a box too wide for every level) of `view` against every slot, each pair once: pair(g, b).
+template <class Pair>
+void walk_global(const CellView& view, Pair&& pair) {
+  const std::size_t n = view.key.size();
+  const std::size_t global = view.level_begin[CellGrid::kGlobalLevel];
+  for (std::size_t g = global; g < n; ++g)
+    for (std::size_t b = 0; b < n; ++b)
+      if (b != g && (b < global || b > g)) pair(g, b);
 }
 
 inline void PairList::build(const CellGrid& grid, const CellView& view, unsigned threads, std::uint64_t horizon,
@@ -63,60 +112,27 @@ inline void PairList::build(const CellGrid& grid, const CellView& view, unsigned
     }
     std::size_t size = 0;
     Tally mine{0, horizon + 1};  // a local, kept in registers, written to tally[c] at the end
-    NeighbourCursor cursor;
-    // The candidates of a near enough to ask, gathered without a branch from all of a's runs, then listed
-    // together: one loop over them per a, not one per run (its exit mispredicts about once per loop).
-    constexpr std::size_t kKept = 64;
-    std::uint32_t kept[kKept];
-    for (std::size_t a = begin; a < end; ++a) {
-      const std::size_t bins = (a - begin) / kBlockSlots * kBuckets;
-      const auto list_kept = [&](const Lister& first_of, std::size_t held) {
-        for (std::size_t k = 0; k < held; ++k) {
-          const std::size_t b = kept[k];
-          const std::uint32_t step = first_of(a, b);
-          if (step > horizon) continue;
-          if (size == found.size()) [[unlikely]]
-            found.resize(size + size / 2);
-          const ListedPair p{static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b), step};
-          found[size++] = p;
-          ++count[bins + std::min(step, kBuckets - 1)];
-          take(mine, p);
-        }
-      };
-      std::size_t kept_so_far = 0;
-      visit_neighbourhood_runs(grid, view, a, cursor, [&](std::size_t from, CellKey last) {
-        // A copy of the lister and of the count per run, in registers: the marks are char stores, which may
-        // alias anything, so values in memory would be read again for every candidate.
-        const Lister first_of = first;
-        const CellKey* const key = view.key.data();
-        std::size_t held = kept_so_far, b = from;
-        for (; b < n && key[b] <= last; ++b) {
-          kept[held] = static_cast<std::uint32_t>(b);
-          held += first_of.near(a, b);
-          if (held == kKept) [[unlikely]] {
-            list_kept(first_of, held);
-            held = 0;
-          }
-        }
-        kept_so_far = held;
-        return b;  // the run ended: a larger key, or the view's end
-      });
-      list_kept(first, kept_so_far);
-    }
+    const Lister first_of = first;
+    walk_near(grid, view, begin, end, first, [&](std::size_t a, std::size_t b) {
+      const std::uint32_t step = first_of(a, b);
+      if (step > horizon) return;
+      if (size == found.size()) [[unlikely]]
+        found.resize(size + size / 2);
+      const ListedPair p{static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b), step};
+      found[size++] = p;
+      ++count[(a - begin) / kBlockSlots * kBuckets + std::min(step, kBuckets - 1)];
+      take(mine, p);
+    });
     chunk.size = size;
     tally[c] = mine;
   });
-  // Global slots (a box too wide for every level) against every slot, each pair once.
   global_.clear();
-  const std::size_t global = view.level_begin[CellGrid::kGlobalLevel];
-  for (std::size_t g = global; g < n; ++g)
-    for (std::size_t b = 0; b < n; ++b) {
-      if (b == g || (b >= global && b < g)) continue;
-      const std::uint32_t step = first(g, b);
-      if (step > horizon) continue;
-      global_.push_back({static_cast<std::uint32_t>(std::min(g, b)), static_cast<std::uint32_t>(std::max(g, b)), step});
-      take(tally[chunks], global_.back());
-    }
+  walk_global(view, [&](std::size_t g, std::size_t b) {
+    const std::uint32_t step = first(g, b);
+    if (step > horizon) return;
+    global_.push_back({static_cast<std::uint32_t>(std::min(g, b)), static_cast<std::uint32_t>(std::max(g, b)), step});
+    take(tally[chunks], global_.back());
+  });
   // Per chunk, the rest of a counting sort by (block, bucket), stable, so each bucket stays in slot order: the
   // pairs are by first slot already, so each block's pairs are one run, sorted by bucket where it is through a
   // copy of that run alone.
@@ -148,6 +164,76 @@ inline void PairList::build(const CellGrid& grid, const CellView& view, unsigned
   lonely_ = static_cast<std::size_t>(std::count(listed.begin(), listed.end(), 0));
 }
 
+// One chunk's contacts in a step: test(a, b) tests a pair with `intersect` and offers an intersecting one to
+// both its slots (offer_least_contact, impl/contacts.hpp), recording a slot that takes its first offer in
+// `touched`. A chunk writes the least contact of its own slots only (below `end`); a later chunk's slot is
+// offered through `offers`, after the parallel part (PairList::offer_the_rest).
+template <class Intersect, class Precedes>
+struct ChunkContacts {
+  Intersect intersects;
+  Precedes before;
+  Buffer<std::uint32_t>& least;
+  Buffer<std::uint32_t>& touched;
+  std::vector<ContactOffer>& offers;
+  std::size_t end;
+  std::size_t seen = 0, hits = 0;
+
+  void test(std::size_t a, std::size_t b) {
+    ++seen;
+    if (!intersects(a, b)) [[likely]]
+      return;
+    ++hits;
+    if (offer_least_contact(least, a, b, before)) touched.push_back(static_cast<std::uint32_t>(a));
+    if (b >= end)
+      offers.push_back({static_cast<std::uint32_t>(b), static_cast<std::uint32_t>(a)});
+    else if (offer_least_contact(least, b, a, before))
+      touched.push_back(static_cast<std::uint32_t>(b));
+  }
+};
+
+template <class Intersect, class Precedes>
+ChunkContacts<Intersect, Precedes> PairList::chunk_contacts(std::size_t c, Buffer<std::uint32_t>& least,
+                                                            std::vector<Buffer<std::uint32_t>>& touched,
+                                                            const Intersect& intersect, const Precedes& precedes) {
+  const std::size_t chunks = chunks_.size();
+  Chunk& chunk = chunks_[c];
+  touched[c].clear();
+  // Room for every slot of the chunk, which costs address space only until it is written: the list then
+  // never grows by copies through new memory (a first step's touched slots are a third of a dense scene).
+  touched[c].reserve(chunk_begin(slots_, chunks, c + 1) - chunk_begin(slots_, chunks, c));
+  chunk.offers.clear();
+  // Copies of the caller's functors: the loop's stores (least, touched) cannot make the compiler reload them
+  // for every pair.
+  return {intersect, precedes, least, touched[c], chunk.offers, chunk_begin(slots_, chunks, c + 1)};
+}
+
+template <class Intersect, class Precedes>
+std::size_t PairList::offer_the_rest(std::span<const std::array<std::size_t, 2>> counts,
+                                     std::span<const ListedPair> global, std::uint64_t j, Buffer<std::uint32_t>& least,
+                                     std::vector<Buffer<std::uint32_t>>& touched, std::size_t& tested,
+                                     Intersect&& intersect, Precedes&& precedes) {
+  const auto offer = [&](std::size_t to, std::size_t from) {
+    if (offer_least_contact(least, to, from, precedes)) touched[chunk_of(to)].push_back(static_cast<std::uint32_t>(to));
+  };
+  for (const Chunk& chunk : chunks_)
+    for (const ContactOffer& o : chunk.offers) offer(o.to, o.from);
+  tested = 0;
+  std::size_t contacts = 0;
+  for (const auto& [seen, hits] : counts) {
+    tested += seen;
+    contacts += hits;
+  }
+  for (const ListedPair& p : global) {
+    if (p.first > j) continue;
+    ++tested;
+    if (!intersect(p.a, p.b)) continue;
+    ++contacts;
+    offer(p.a, p.b);
+    offer(p.b, p.a);
+  }
+  return contacts;
+}
+
 template <class Intersect, class Precedes, class Prefetch>
 std::size_t PairList::least_contacts(std::uint64_t j, unsigned threads, Buffer<std::uint32_t>& least,
                                      std::vector<Buffer<std::uint32_t>>& touched, std::size_t& tested,
@@ -155,47 +241,20 @@ std::size_t PairList::least_contacts(std::uint64_t j, unsigned threads, Buffer<s
   const std::size_t chunks = chunks_.size();
   touched.resize(chunks);
   std::vector<std::array<std::size_t, 2>> counts(chunks);  // per chunk: pairs tested, pairs intersecting
-  // A slot's first offer records it as touched (impl/contacts.hpp).
-  const auto offer = [&](std::size_t to, std::size_t from, Buffer<std::uint32_t>& list) {
-    if (offer_least_contact(least, to, from, precedes)) list.push_back(static_cast<std::uint32_t>(to));
-  };
   // The buckets active at step j: 0 … j, the last one (first steps ≥ kBuckets − 1) pair by pair.
   const std::size_t last = std::min<std::uint64_t>(j, kBuckets - 1);
   for_each_chunk(chunks, threads, [&](std::size_t c) {
-    Chunk& chunk = chunks_[c];
-    touched[c].clear();
-    // Room for every slot of the chunk, which costs address space only until it is written: the list then
-    // never grows by copies through new memory (a first step's touched slots are a third of a dense scene).
-    touched[c].reserve(chunk_begin(slots_, chunks, c + 1) - chunk_begin(slots_, chunks, c));
-    chunk.offers.clear();
-    const std::size_t end = chunk_begin(slots_, chunks, c + 1);
+    const Chunk& chunk = chunks_[c];
+    auto contacts = chunk_contacts(c, least, touched, intersect, precedes);
     const std::size_t blocks = (chunk.starts.size() - 1) / kBuckets;
-    std::size_t seen = 0, hits = 0;
-    // Copies of the caller's functors and of the list's address in locals: the loop's stores (least, touched)
-    // cannot make the compiler reload them for every pair.
-    const auto intersects = intersect;
-    const auto before = precedes;
     const auto ask = prefetch;
     const ListedPair* const pairs = chunk.pairs.data();
-    Buffer<std::uint32_t>& mine = touched[c];
-    const auto test = [&](const ListedPair& p) {
-      ++seen;
-      if (!intersects(p.a, p.b)) [[likely]]
-        return;
-      ++hits;
-      // A chunk writes the least contact of its own slots only; the rest is offered after the parallel part.
-      if (offer_least_contact(least, p.a, p.b, before)) mine.push_back(p.a);
-      if (p.b >= end)
-        chunk.offers.push_back({p.b, p.a});
-      else if (offer_least_contact(least, p.b, p.a, before))
-        mine.push_back(p.b);
-    };
     // Pairs [from, to) in order, each tested when it is due; the circles of the pair kPrefetchAhead places on
     // are asked for meanwhile (their loads are the step's cache misses where pairs are far apart in memory).
     const auto test_due = [&](std::size_t from, std::size_t to, auto due) {
       for (std::size_t i = from; i < to; ++i) {
         if (i + kPrefetchAhead < to) ask(pairs[i + kPrefetchAhead].a, pairs[i + kPrefetchAhead].b);
-        if (due(pairs[i])) test(pairs[i]);
+        if (due(pairs[i])) contacts.test(pairs[i].a, pairs[i].b);
       }
     };
     for (std::size_t k = 0; k < blocks; ++k) {
@@ -205,25 +264,60 @@ std::size_t PairList::least_contacts(std::uint64_t j, unsigned threads, Buffer<s
       if (last == kBuckets - 1)
         test_due(starts[kBuckets - 1], starts[kBuckets], [j](const ListedPair& p) { return p.first <= j; });
     }
-    counts[c] = {seen, hits};
+    counts[c] = {contacts.seen, contacts.hits};
   });
-  std::size_t contacts = 0;
-  tested = 0;
-  for (const auto& [seen, hits] : counts) {
-    tested += seen;
-    contacts += hits;
+  return offer_the_rest(counts, global_, j, least, touched, tested, intersect, precedes);
+}
+
+template <class Intersect, class Precedes>
+std::size_t PairList::contacts_now(const CellGrid& grid, const CellView& view, unsigned threads, const Lister& first,
+                                   Buffer<std::uint32_t>& least, std::vector<Buffer<std::uint32_t>>& touched,
+                                   std::size_t& tested, Intersect&& intersect, Precedes&& precedes) {
+  const std::size_t n = view.key.size();
+  slots_ = n;
+  horizon_ = 0;
+  const std::size_t chunks = chunk_count(n, threads);
+  chunks_.resize(chunks);
+  touched.resize(chunks);
+  // No list: a later build makes its room without a count to go by.
+  for (Chunk& chunk : chunks_) {
+    chunk.size = 0;
+    chunk.starts.clear();
   }
-  for (const Chunk& chunk : chunks_)
-    for (const ContactOffer& o : chunk.offers) offer(o.to, o.from, touched[chunk_of(o.to)]);
-  for (std::size_t i = 0; i < global_.size(); ++i) {
-    if (global_[i].first > j) continue;
-    ++tested;
-    const ListedPair& p = global_[i];
-    if (!intersect(p.a, p.b)) continue;
-    ++contacts;
-    offer(p.a, p.b, touched[chunk_of(p.a)]);
-    offer(p.b, p.a, touched[chunk_of(p.b)]);
-  }
+  // Which slots are in a tested pair, as build() marks the listed ones (relaxed atomic stores, all of the
+  // same value: a pair's second slot may be another chunk's).
+  Buffer<unsigned char>& marked = listed_;
+  marked.reserve(n);
+  marked.assign(n, 0);
+  const auto mark = [&marked](std::size_t a, std::size_t b) {
+    std::atomic_ref<unsigned char>(marked[a]).store(1, std::memory_order_relaxed);
+    std::atomic_ref<unsigned char>(marked[b]).store(1, std::memory_order_relaxed);
+  };
+  std::vector<std::array<std::size_t, 2>> counts(chunks);  // per chunk: pairs tested, pairs intersecting
+  // Each pair a list of horizon 0 would hold (its first step 0) tested as the walk finds it.
+  for_each_chunk(chunks, threads, [&](std::size_t c) {
+    auto contacts = chunk_contacts(c, least, touched, intersect, precedes);
+    const Lister first_of = first;
+    walk_near(grid, view, chunk_begin(n, chunks, c), chunk_begin(n, chunks, c + 1), first,
+              [&](std::size_t a, std::size_t b) {
+                if (first_of(a, b) != 0) return;
+                mark(a, b);
+                contacts.test(a, b);
+              });
+    counts[c] = {contacts.seen, contacts.hits};
+  });
+  global_.clear();
+  walk_global(view, [&](std::size_t g, std::size_t b) {
+    if (first(g, b) != 0) return;
+    mark(g, b);
+    global_.push_back({static_cast<std::uint32_t>(std::min(g, b)), static_cast<std::uint32_t>(std::max(g, b)), 0});
+  });
+  const std::size_t contacts = offer_the_rest(counts, global_, 0, least, touched, tested, intersect, precedes);
+  global_.clear();
+  size_ = 0;
+  tests_ = tested;
+  earliest_ = 1;
+  lonely_ = static_cast<std::size_t>(std::count(marked.begin(), marked.end(), 0));
   return contacts;
 }
 

@@ -48,16 +48,21 @@ TEST(buffers, a_mapping_given_back_serves_the_next_request_of_its_size_as_it_was
   allocator.deallocate(again, bytes);
 }
 
-TEST(buffers, a_request_of_another_size_gets_a_new_mapping_not_a_kept_one) {
+TEST(buffers, a_smaller_request_takes_a_kept_mapping_cut_to_its_size) {
   BufferAllocator<unsigned char> allocator;
   unsigned char* const kept = allocator.allocate(3 * kHugePage);
   kept[0] = 42;
   allocator.deallocate(kept, 3 * kHugePage);
-  // Two huge pages: a kept mapping of three would be given back later as two, and lose one.
-  unsigned char* const other = allocator.allocate(2 * kHugePage);
-  EXPECT_EQ(other[0], 0);
-  EXPECT_EQ(offset_in_huge_page(other), 0u);
-  allocator.deallocate(other, 2 * kHugePage);
+  unsigned char* const smaller = allocator.allocate(2 * kHugePage);
+  EXPECT_EQ(smaller, kept);
+  EXPECT_EQ(smaller[0], 42);
+  // Cut to two huge pages: given back as two, kept as two, and a request of three cannot take it.
+  allocator.deallocate(smaller, 2 * kHugePage);
+  unsigned char* const larger = allocator.allocate(3 * kHugePage);
+  EXPECT_EQ(larger[0], 0);  // a new mapping, zeroed
+  EXPECT_EQ(offset_in_huge_page(larger), 0u);
+  larger[3 * kHugePage - 1] = 1;  // all of it is mapped
+  allocator.deallocate(larger, 3 * kHugePage);
 }
 
 TEST(buffers, elements_that_own_memory_are_moved_not_lost) {

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cmath>
@@ -13,6 +14,8 @@
 #include <vector>
 
 #include "impl/engine.hpp"
+#include "impl/predicate.hpp"
+#include "impl/random_scene.hpp"
 #include "spec/rational.hpp"
 
 namespace circles::impl {
@@ -307,6 +310,37 @@ TEST(pair_list, the_schedule_grows_fourfold_far_below_balance_twofold_below_half
   EXPECT_EQ(s.horizon(), 0u);
   s.update(0, 10);
   EXPECT_EQ(s.horizon(), 1u);
+}
+
+// A step with no list to keep (horizon 0) writes none: it tests each pair as the broad phase finds it. It must
+// test exactly the pairs the list would have held (candidates() builds that list), find the contacts among
+// them, count what the list would count, and give the world a kept list gives; on two threads, across chunks.
+TEST(pair_list, a_step_without_a_list_tests_the_pairs_the_list_would_hold_and_no_others) {
+  const Circles w = random_scene(20000, 0.1, 7);
+  for (const unsigned threads : {1u, 2u}) {
+    DoubleEngine now{World{w}, {.threads = threads, .keep_pairs = false}};
+    const std::vector<CandidatePair> listed = now.candidates();
+    std::size_t intersecting = 0;
+    std::vector<bool> in_pair(w.size(), false);
+    for (const CandidatePair& p : listed) {
+      intersecting += intersect_exact(w[p.i][0], w[p.i][1], w[p.i][4], w[p.j][0], w[p.j][1], w[p.j][4]);
+      in_pair[p.i] = in_pair[p.j] = true;
+    }
+    ASSERT_GT(intersecting, 1000u);
+    now.step();
+    EXPECT_EQ(now.stats().pairs_tested, listed.size()) << threads << " threads";
+    EXPECT_EQ(now.stats().pairs_listed, listed.size());
+    EXPECT_EQ(now.stats().contacts, intersecting);
+    EXPECT_EQ(now.stats().lonely_circle_steps,
+              static_cast<std::uint64_t>(std::count(in_pair.begin(), in_pair.end(), false)));
+    DoubleEngine kept{World{w}, {.threads = threads, .keep_pairs = true, .horizon = 4}};
+    kept.step();
+    const Circles got = now.world().circles(), want = kept.world().circles();
+    for (std::size_t k = 0; k < got.size(); ++k)
+      for (std::size_t f = 0; f < 5; ++f)
+        ASSERT_EQ(std::bit_cast<std::uint64_t>(got[k][f]), std::bit_cast<std::uint64_t>(want[k][f]))
+            << threads << " threads, circle " << k << ", field " << f;
+  }
 }
 
 }  // namespace
