@@ -33,8 +33,8 @@ void deallocate_buffer(void* block, std::size_t bytes) noexcept;
 // x86-64's huge page.
 inline constexpr std::size_t kHugePage = std::size_t{1} << 21;
 // The least block that gets a mapping of its own: from operator new, a block of 512 KiB costs 128 faults of
-// 4 KiB pages as it is first written (a slot mark a circle, at 10^6 circles, was 256 of them); mapped, it
-// costs one fault and at most 1.5 MiB of memory beyond the block.
+// 4 KiB pages as it is first written (a pair list's slot marks, a byte a circle, cost 256 at 10^6 circles);
+// mapped, it costs one fault and at most 1.5 MiB of memory beyond the block.
 inline constexpr std::size_t kMappedFrom = kHugePage / 4;
 
 template <class T>

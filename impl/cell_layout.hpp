@@ -127,9 +127,7 @@ class CellLayout {
     built_at_ = stats.steps;
     stats.pairs_listed += pairs_.size();
     ++stats.rebuilds;
-    // The schedule learns from lists of its own horizon; a list cut to the run's end is the run's last.
-    if (options.keep_pairs && options.horizon == 0 && horizon == schedule_.horizon())
-      schedule_.update(pairs_.tests(), id_.size());
+    if (learns(options, horizon)) schedule_.update(pairs_.tests(), id_.size());
     rebuild_at_ = stats.steps + horizon + 1;
   }
 
@@ -138,8 +136,7 @@ class CellLayout {
   // same `lister`, testing the pairs that list would hold. The columns must stay where they are until then.
   void list_in_step(EngineStats& stats, const EngineOptions& options, const Buffer<double>& x,
                     const Buffer<double>& y, const Buffer<double>& inflated, const Lister& lister) {
-    in_step_ = InStep{CellView{key_, x, y, inflated, levels_, level_begin_}, lister,
-                      options.keep_pairs && options.horizon == 0 && schedule_.horizon() == 0};
+    in_step_ = InStep{CellView{key_, x, y, inflated, levels_, level_begin_}, lister, learns(options, 0)};
     built_at_ = stats.steps;
     ++stats.rebuilds;
     rebuild_at_ = stats.steps + 1;
@@ -159,6 +156,11 @@ class CellLayout {
   // integers) are swapped rather than copied (no allocation); the column is scratch afterwards either way.
   template <class T>
   void gather(unsigned threads, const Columns<T>& set);
+  // True when the schedule learns from the tests of a list of `horizon`: it chooses the horizons, and learns
+  // from lists of its own horizon only (a list cut to the run's end is the run's last).
+  bool learns(const EngineOptions& options, std::uint64_t horizon) const noexcept {
+    return options.keep_pairs && options.horizon == 0 && horizon == schedule_.horizon();
+  }
 
   // What list_in_step() leaves for the step: the view and lister of the walk, and whether the schedule learns
   // from the step's tests (as list() lets it from a list of its own horizon).

@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -348,6 +349,16 @@ class PairList {
   };
   // The chunk that holds `slot`.
   std::size_t chunk_of(std::size_t slot) const noexcept;
+  // Which slots are in a pair: no slot of n, then both slots of a pair. A pair's second slot may be another
+  // chunk's, so the marks are relaxed atomic stores, all of the same value.
+  void clear_marks(std::size_t n) {
+    listed_.reserve(n);
+    listed_.assign(n, 0);
+  }
+  void mark(std::size_t a, std::size_t b) noexcept {
+    std::atomic_ref<unsigned char>(listed_[a]).store(1, std::memory_order_relaxed);
+    std::atomic_ref<unsigned char>(listed_[b]).store(1, std::memory_order_relaxed);
+  }
   // Chunk c's tester for a step: its touched slots and offers cleared, room made for them.
   template <class Intersect, class Precedes>
   ChunkContacts<Intersect, Precedes> chunk_contacts(std::size_t c, Buffer<std::uint32_t>& least,

@@ -79,18 +79,13 @@ inline void PairList::build(const CellGrid& grid, const CellView& view, unsigned
   horizon_ = horizon;
   const std::size_t chunks = chunk_count(n, threads);
   chunks_.resize(chunks);
-  // Which slots are in a pair: a pair's second slot may be another chunk's, so those marks are relaxed atomic
-  // stores, all of the same value.
-  Buffer<unsigned char>& listed = listed_;
-  listed.reserve(n);
-  listed.assign(n, 0);
+  clear_marks(n);
   // A listed pair counted in a tally (its tests over the horizon, its earliest first step) and its slots marked.
   using Tally = std::array<std::uint64_t, 2>;
-  const auto take = [&listed, horizon](Tally& into, const ListedPair& p) {
+  const auto take = [this, horizon](Tally& into, const ListedPair& p) {
     into[0] += horizon + 1 - p.first;
     into[1] = std::min<std::uint64_t>(into[1], p.first);
-    std::atomic_ref<unsigned char>(listed[p.a]).store(1, std::memory_order_relaxed);
-    std::atomic_ref<unsigned char>(listed[p.b]).store(1, std::memory_order_relaxed);
+    mark(p.a, p.b);
   };
   std::vector<Tally> tally(chunks + 1, Tally{0, horizon + 1});  // per chunk, then the global pairs'
   // The pairs of each chunk in the order the broad phase offers them (by first slot), each counted in its
@@ -161,7 +156,7 @@ inline void PairList::build(const CellGrid& grid, const CellView& view, unsigned
     tests_ += tests;
     earliest_ = std::min(earliest_, earliest);
   }
-  lonely_ = static_cast<std::size_t>(std::count(listed.begin(), listed.end(), 0));
+  lonely_ = static_cast<std::size_t>(std::count(listed_.begin(), listed_.end(), 0));
 }
 
 // One chunk's contacts in a step: test(a, b) tests a pair with `intersect` and offers an intersecting one to
@@ -284,15 +279,8 @@ std::size_t PairList::contacts_now(const CellGrid& grid, const CellView& view, u
     chunk.size = 0;
     chunk.starts.clear();
   }
-  // Which slots are in a tested pair, as build() marks the listed ones (relaxed atomic stores, all of the
-  // same value: a pair's second slot may be another chunk's).
-  Buffer<unsigned char>& marked = listed_;
-  marked.reserve(n);
-  marked.assign(n, 0);
-  const auto mark = [&marked](std::size_t a, std::size_t b) {
-    std::atomic_ref<unsigned char>(marked[a]).store(1, std::memory_order_relaxed);
-    std::atomic_ref<unsigned char>(marked[b]).store(1, std::memory_order_relaxed);
-  };
+  // The slots of the tested pairs are marked as build() marks the listed ones.
+  clear_marks(n);
   std::vector<std::array<std::size_t, 2>> counts(chunks);  // per chunk: pairs tested, pairs intersecting
   // Each pair a list of horizon 0 would hold (its first step 0) tested as the walk finds it.
   for_each_chunk(chunks, threads, [&](std::size_t c) {
@@ -317,7 +305,7 @@ std::size_t PairList::contacts_now(const CellGrid& grid, const CellView& view, u
   size_ = 0;
   tests_ = tested;
   earliest_ = 1;
-  lonely_ = static_cast<std::size_t>(std::count(marked.begin(), marked.end(), 0));
+  lonely_ = static_cast<std::size_t>(std::count(listed_.begin(), listed_.end(), 0));
   return contacts;
 }
 
