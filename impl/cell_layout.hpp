@@ -101,10 +101,18 @@ class CellLayout {
   void step(EngineStats& stats, unsigned threads, Rebuild&& rebuild, MakeTest&& make_test, Move&& move);
 
   // The horizon of the list built in the step numbered `steps` (steps taken so far): none without kept pairs,
-  // the options' fixed one, or the schedule's; cut to the options' last step when they give one.
+  // the options' fixed one, or the schedule's. When the options give the run's length, the R steps left are
+  // split evenly among the k = ⌈R/(H + 1)⌉ lists that the chosen H needs to cover them: this list serves
+  // ⌈R/k⌉ steps. That is as many lists as cutting only the last one at the run's end, each with a horizon as
+  // short or shorter, so a skin as thin or thinner and no more pairs to list (20 steps at H = 8: lists of 7,
+  // 7 and 6 steps rather than 9, 9 and 2).
   std::uint64_t horizon(const EngineOptions& options, std::uint64_t steps) const noexcept {
     const std::uint64_t chosen = !options.keep_pairs ? 0 : options.horizon > 0 ? options.horizon : schedule_.horizon();
-    return options.steps > steps ? std::min(chosen, options.steps - steps - 1) : chosen;
+    if (options.steps <= steps) return chosen;
+    const std::uint64_t left = options.steps - steps;
+    if (chosen >= left - 1) return left - 1;  // one list to the end
+    const auto ceil_div = [](std::uint64_t a, std::uint64_t b) { return a / b + (a % b != 0); };
+    return ceil_div(left, ceil_div(left, chosen + 1)) - 1;
   }
   // A horizon whose skin was not finite: the list covers its own world, and so does the schedule's next.
   void collapse() noexcept { schedule_.collapse(); }
@@ -127,7 +135,7 @@ class CellLayout {
     built_at_ = stats.steps;
     stats.pairs_listed += pairs_.size();
     ++stats.rebuilds;
-    if (learns(options, horizon)) schedule_.update(pairs_.tests(), id_.size());
+    if (learns(options)) schedule_.update(pairs_.tests(), id_.size());
     rebuild_at_ = stats.steps + horizon + 1;
   }
 
@@ -136,7 +144,7 @@ class CellLayout {
   // same `lister`, testing the pairs that list would hold. The columns must stay where they are until then.
   void list_in_step(EngineStats& stats, const EngineOptions& options, const Buffer<double>& x,
                     const Buffer<double>& y, const Buffer<double>& inflated, const Lister& lister) {
-    in_step_ = InStep{CellView{key_, x, y, inflated, levels_, level_begin_}, lister, learns(options, 0)};
+    in_step_ = InStep{CellView{key_, x, y, inflated, levels_, level_begin_}, lister, learns(options)};
     built_at_ = stats.steps;
     ++stats.rebuilds;
     rebuild_at_ = stats.steps + 1;
@@ -156,14 +164,13 @@ class CellLayout {
   // integers) are swapped rather than copied (no allocation); the column is scratch afterwards either way.
   template <class T>
   void gather(unsigned threads, const Columns<T>& set);
-  // True when the schedule learns from the tests of a list of `horizon`: it chooses the horizons, and learns
-  // from lists of its own horizon only (a list cut to the run's end is the run's last).
-  bool learns(const EngineOptions& options, std::uint64_t horizon) const noexcept {
-    return options.keep_pairs && options.horizon == 0 && horizon == schedule_.horizon();
-  }
+  // True when the schedule learns from the tests of the lists: when it chooses their horizons. A list shorter
+  // than its choice (a run of known length shares its steps evenly) teaches it as well: its rule weighs a
+  // list's tests against one rebuild, whatever the number of steps the list served.
+  static bool learns(const EngineOptions& options) noexcept { return options.keep_pairs && options.horizon == 0; }
 
   // What list_in_step() leaves for the step: the view and lister of the walk, and whether the schedule learns
-  // from the step's tests (as list() lets it from a list of its own horizon).
+  // from the step's tests (as list() lets it from a list).
   struct InStep {
     CellView view;
     Lister lister;

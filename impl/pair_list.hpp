@@ -220,17 +220,17 @@ class HorizonSchedule {
   static constexpr double kFarBelow = 16;
 
   std::uint64_t horizon() const noexcept { return horizon_; }
-  // After a list whose tests over its horizon() + 1 steps add up to `tests` was built for `circles` circles:
-  // sets the next horizon.
+  // After a list whose tests over the steps it served add up to `tests` was built for `circles` circles: sets
+  // the next horizon. The tests of a step against the rebuild's share of it, both over the same steps, are the
+  // list's tests against one rebuild: the rule holds for a list shorter than horizon() + 1 steps as well.
   void update(std::size_t tests, std::size_t circles) noexcept {
-    const double steps = static_cast<double>(horizon_ + 1);
-    const double per_step = static_cast<double>(tests) / steps;
-    const double rebuild = kRebuildCost * static_cast<double>(circles) / steps;
-    if (per_step < rebuild / kFarBelow)
+    const double tested = static_cast<double>(tests);
+    const double rebuild = kRebuildCost * static_cast<double>(circles);
+    if (tested < rebuild / kFarBelow)
       horizon_ = std::min(kMaxHorizon, horizon_ == 0 ? 1 : 4 * horizon_);
-    else if (per_step < rebuild / 2)
+    else if (tested < rebuild / 2)
       horizon_ = std::min(kMaxHorizon, horizon_ == 0 ? 1 : 2 * horizon_);
-    else if (per_step > 2 * rebuild)
+    else if (tested > 2 * rebuild)
       horizon_ /= 2;
   }
   // A horizon whose skin was not finite: the next list covers its own world only.

@@ -10,6 +10,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -248,10 +249,31 @@ TEST(pair_list, every_horizon_and_thread_count_gives_the_same_bits_on_a_busy_wor
     }
 }
 
+TEST(pair_list, a_run_of_known_length_shares_its_steps_evenly_among_the_lists_its_horizon_needs) {
+  const CellLayout layout;  // the schedule's first horizon, 8: a list serves up to 9 steps
+  ASSERT_EQ(HorizonSchedule::kFirstHorizon, 8u);
+  const auto served = [&](EngineOptions options, std::uint64_t taken) { return layout.horizon(options, taken) + 1; };
+  EXPECT_EQ(served({.steps = 20}, 0), 7u);   // 3 lists: 7, 7, 6 steps
+  EXPECT_EQ(served({.steps = 20}, 14), 6u);  // the last of them
+  EXPECT_EQ(served({.steps = 18}, 0), 9u);   // 2 lists of 9: nothing to share
+  EXPECT_EQ(served({.steps = 19}, 0), 7u);   // 3 lists: 7, 6, 6
+  EXPECT_EQ(served({.steps = 9}, 0), 9u);
+  EXPECT_EQ(served({.steps = 5}, 3), 2u);    // cut to the run's end
+  EXPECT_EQ(served({}, 0), 9u);              // a run of unknown length: the schedule's horizon
+  EXPECT_EQ(served({.horizon = 2, .steps = 7}, 0), 3u);  // a fixed horizon is shared the same way: 3, 2, 2
+  EXPECT_EQ(served({.keep_pairs = false, .steps = 7}, 0), 1u);
+  // No overflow at the ends of the range.
+  constexpr std::uint64_t kAll = std::numeric_limits<std::uint64_t>::max();
+  EXPECT_EQ(served({.horizon = kAll, .steps = kAll}, 0), kAll);
+  EXPECT_EQ(served({.horizon = kAll - 1, .steps = kAll}, 1), kAll - 1);
+  EXPECT_EQ(layout.horizon({.steps = kAll}, 0), 8u);  // ⌈(2^64 − 1) / 9⌉ lists: the first serves 9 steps
+}
+
 TEST(pair_list, a_run_of_known_length_lists_nothing_past_its_last_step_and_gives_the_same_bits) {
   // EngineOptions::steps cuts every horizon to the run's end. A 1-step run lists only the pairs that touch in
   // world 0 (horizon 0: every listed pair is tested in step 0), where the schedule's first horizon of 8 lists
-  // pairs that meet later; a 3-step run needs one list; every run ends in the bits of lists for each step.
+  // pairs that meet later; a 3-step run needs one list; a 12-step run two, which share its steps evenly; every
+  // run ends in the bits of lists for each step.
   const Circles w = busy_world();
   DoubleEngine open{World{w}, {.threads = 1}};
   open.step();
@@ -275,6 +297,14 @@ TEST(pair_list, a_run_of_known_length_lists_nothing_past_its_last_step_and_gives
       EXPECT_EQ(planned.stats().pairs_listed, fixed.stats().pairs_listed);
       EXPECT_LT(planned.stats().pairs_listed, open.stats().pairs_listed);
     }
+    if (steps == 12) {  // the first horizon of 8 needs two lists for 12 steps: two of 6 steps (horizon 5), not 9 and 3
+      DoubleEngine first{World{w}, {.threads = 1, .steps = steps}};
+      DoubleEngine fixed{World{w}, {.threads = 1, .horizon = 5}};
+      first.step();
+      fixed.step();
+      EXPECT_EQ(first.stats().pairs_listed, fixed.stats().pairs_listed);
+      EXPECT_LT(first.stats().pairs_listed, open.stats().pairs_listed);
+    }
   }
 }
 
@@ -282,19 +312,19 @@ TEST(pair_list, the_schedule_grows_fourfold_far_below_balance_twofold_below_half
   HorizonSchedule s;
   EXPECT_EQ(s.horizon(), HorizonSchedule::kFirstHorizon);
   ASSERT_EQ(s.horizon(), 8u);
-  // At H = 8 a rebuild of 1000 circles costs 8·1000/9 ≈ 889 pair tests a step. No pairs: far below a
-  // sixteenth of that, ×4.
+  // A rebuild of 1000 circles costs 8·1000 pair tests, whatever the steps its list serves. No pairs: far below
+  // a sixteenth of that, ×4.
   s.update(0, 1000);
   ASSERT_EQ(s.horizon(), 32u);
-  // At H = 32 the share is 8000/33 a step, its sixteenth 500/33: 499 tests over the 33 steps are below it, ×4;
-  // 500 are the same double, not below, ×2 (below half, 4000/33).
+  // Its sixteenth is 500: 499 tests over the list's steps are below it, ×4; 500 are not below, ×2 (below
+  // half, 4000).
   HorizonSchedule far = s;
   far.update(499, 1000);
   EXPECT_EQ(far.horizon(), 128u);
   s.update(500, 1000);
   ASSERT_EQ(s.horizon(), 64u);
-  // At H = 64 the share is 8000/65: 3999 tests over the 65 steps are below half of it, ×2; 4000 are not, and
-  // not above twice it either, kept; 16,000 are twice it, kept; 16,001 are above, halved.
+  // 3999 tests are below half of it, ×2; 4000 are not, and not above twice it either, kept; 16,000 are twice
+  // it, kept; 16,001 are above, halved.
   HorizonSchedule below_half = s;
   below_half.update(3999, 1000);
   EXPECT_EQ(below_half.horizon(), 128u);
