@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <type_traits>
 #include <utility>
 
 namespace circles::impl {
@@ -165,6 +166,16 @@ class KeyPacking {
     return packed;
   }
   int bits() const noexcept { return bits_; }
+  // The key a packed value below 2^bits() came from: each field read back from its bits, plus its least value.
+  CellKey unpack(std::uint64_t packed) const noexcept {
+    CellKey k = 0;
+    for (std::size_t f = 0; f < kFields; ++f) {
+      const int width = (f == 0 ? bits_ : at_[f - 1]) - at_[f];  // at_ grows from the last field to the first
+      const std::uint64_t mask = (std::uint64_t{1} << width) - 1;  // width < 64 (kField)
+      k |= (((packed >> at_[f]) & mask) + low_[f]) << kField[f][0];
+    }
+    return k;
+  }
 
  private:
   // (shift, width) of each field, most significant first: level, band, column, row.
@@ -175,6 +186,11 @@ class KeyPacking {
       {CellGrid::kBandBits, CellGrid::kCellBits},
       {0, CellGrid::kBandBits},
   }};
+  static_assert([] {
+    for (const auto& f : kField)
+      if (f[1] >= 64) return false;
+    return true;
+  }(), "unpack() shifts by a field's width");
   static std::uint64_t field(CellKey k, std::size_t f) noexcept {
     return (k >> kField[f][0]) & ((std::uint64_t{1} << kField[f][1]) - 1);
   }
@@ -237,9 +253,11 @@ void repair(Buffer<Entry>& list, Buffer<Entry>& scratch) {
 // The first layout's sort (no previous keys to guide it): the slots by (key, slot) through 8-byte entries,
 // the packed key (KeyPacking) in the upper half and the slot in the lower, half the bytes of an Entry, sorted
 // by the packed bits as sort_slot_ordered sorts Entries; the input is in slot order, so ties stay in slot
-// order. Returns false, with `order` untouched, when the packed keys take more than 32 bits or the keys are
-// fewer than kRadixFrom (the general path sorts those with std::sort).
-bool sort_packed(std::span<const CellKey> keys, Buffer<std::uint32_t>& order) {
+// order. The sorted entries then give `order` and, unpacked in place, `sorted` (keys[order[t]]), which a
+// gather would read at random. Returns false, with `order` and `sorted` untouched, when the packed keys take
+// more than 32 bits or the keys are fewer than kRadixFrom (the general path sorts those with std::sort).
+bool sort_packed(std::span<const CellKey> keys, Buffer<std::uint32_t>& order, Buffer<CellKey>& sorted) {
+  static_assert(std::is_same_v<CellKey, std::uint64_t>, "an entry becomes its key in place");
   const std::size_t n = keys.size();
   if (n < kRadixFrom) return false;
   const KeyPacking packing(keys, [](CellKey k) { return k; });
@@ -252,7 +270,11 @@ bool sort_packed(std::span<const CellKey> keys, Buffer<std::uint32_t>& order) {
     radix_pass<std::uint64_t>(from, to, [shift](std::uint64_t e) { return (e >> shift) & kDigit; });
     from.swap(to);
   }
-  for (std::size_t t = 0; t < n; ++t) order[t] = static_cast<std::uint32_t>(from[t]);
+  for (std::size_t t = 0; t < n; ++t) {
+    order[t] = static_cast<std::uint32_t>(from[t]);
+    from[t] = packing.unpack(from[t] >> 32);
+  }
+  sorted.swap(from);
   return true;
 }
 
@@ -340,8 +362,9 @@ void CellOrder::Chunk::merge_into(std::span<std::uint32_t> out) {
 }
 
 bool CellOrder::sort(std::span<const CellKey> keys, std::span<const CellKey> previous,
-                     Buffer<std::uint32_t>& order, unsigned threads) {
+                     Buffer<std::uint32_t>& order, unsigned threads, Buffer<CellKey>* sorted) {
   const std::size_t n = keys.size();
+  if (sorted) sorted->clear();
   if (n > std::numeric_limits<std::uint32_t>::max())
     throw std::invalid_argument("CellOrder::sort: more than 2^32 - 1 slots");
   order.resize(n);
@@ -350,7 +373,8 @@ bool CellOrder::sort(std::span<const CellKey> keys, std::span<const CellKey> pre
     for (std::size_t s = 0; s < n; ++s) order[s] = static_cast<std::uint32_t>(s);
     return true;
   }
-  if (previous.size() != n && sort_packed(keys, order)) return false;
+  Buffer<CellKey> unwanted;
+  if (previous.size() != n && sort_packed(keys, order, sorted ? *sorted : unwanted)) return false;
   // Parts need the previous keys, sorted, as splitters: without them, one chunk does it all.
   const std::size_t chunks = previous.size() == n ? chunk_count(n, threads) : 1;
   chunks_.resize(chunks);

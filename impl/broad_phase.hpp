@@ -176,9 +176,11 @@ class CellOrder {
   // Sets `order` to the slots of `keys` in ascending key order (ties in slot order): keys[order[0]] ≤
   // keys[order[1]] ≤ …. `previous` holds the keys the same slots had when they were last sorted (ascending
   // by slot), or is empty; it only guides the work, never the result. Returns true when `keys` were sorted
-  // already (`order` is then the identity).
+  // already (`order` is then the identity). `sorted`, when given, is emptied, and then holds keys[order[t]]
+  // at t when the sort had them in that order at no cost (the unguided sort of kRadixFrom keys or more, in
+  // its own scratch); a caller that finds it empty gathers the keys itself.
   bool sort(std::span<const CellKey> keys, std::span<const CellKey> previous, Buffer<std::uint32_t>& order,
-            unsigned threads = 1);
+            unsigned threads = 1, Buffer<CellKey>* sorted = nullptr);
 
  private:
   struct Entry {

@@ -50,17 +50,28 @@ void CellLayout::arrange(unsigned threads, std::uint64_t horizon, const Buffer<d
   }
   next_key_.resize(n);
   locate(grid_, threads, x, y, inflated, next_key_);
-  if (key_.size() != n) key_.clear();  // the first layout: no previous order to guide the sort
-  const bool sorted = order_.sort(next_key_, key_, permutation_, threads);
+  // The first layout: no previous order to guide the sort, and id_ is still the identity.
+  const bool first = key_.size() != n;
+  if (first) key_.clear();
+  Buffer<CellKey> sorted_keys;
+  const bool sorted = order_.sort(next_key_, key_, permutation_, threads, &sorted_keys);
   std::swap(key_, next_key_);
   if (!sorted) {
     // least_ is the identity between steps, so it stays.
     (gather(threads, columns), ...);
-    // The keys before the id: their scratch is the size of the columns' (8 bytes a circle), which the
-    // buffers keep from the columns' gather (impl/buffers.hpp) for a request of that size next.
-    gather(threads, Columns<CellKey>{next_key_, {&key_}});
-    scratch_id_.resize(n);
-    gather(threads, Columns<std::uint32_t>{scratch_id_, {&id_}});
+    // The keys as the sort left them when it could, else gathered; then the id, whose gather from the
+    // identity is the permutation itself. A gather's scratch is the size of the columns' (8 bytes a circle),
+    // which the buffers keep from the columns' gather (impl/buffers.hpp) for a request of that size next.
+    if (sorted_keys.size() == n)
+      key_.swap(sorted_keys);
+    else
+      gather(threads, Columns<CellKey>{next_key_, {&key_}});
+    if (first) {
+      id_.swap(permutation_);
+    } else {
+      scratch_id_.resize(n);
+      gather(threads, Columns<std::uint32_t>{scratch_id_, {&id_}});
+    }
   }
   index_levels(key_, level_begin_, levels_);
   // The sort's scratch (the permutation and the old keys, 12 bytes a circle) is given back before the list

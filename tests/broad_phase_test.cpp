@@ -172,6 +172,22 @@ TEST(broad_phase, the_sort_of_many_unguided_keys_equals_a_plain_sort_whichever_b
       {"bits 0 to 15 and 40 to 55: 32 bits in two runs", {CellKey{0xffff}, CellKey{0xffff} << 40}},
       {"bits 0 to 32: 33 bits, too many to pack", {(CellKey{1} << 33) - 1}},
   };
+  // The sort also gives the keys in their new order when its packed entries hold them (at most 32 bits of
+  // fields that differ): each must be keys[order[t]], unpacked from its entry.
+  const auto sort_with_keys = [](const std::vector<CellKey>& keys, const std::string& name) {
+    Buffer<std::uint32_t> order;
+    Buffer<CellKey> sorted{CellKey{7}};  // emptied by the sort unless it writes the keys
+    CellOrder().sort(keys, {}, order, 1, &sorted);
+    EXPECT_EQ(order, plainly_sorted(keys)) << name;
+    if (sorted.empty()) return false;
+    EXPECT_EQ(sorted.size(), keys.size()) << name;
+    for (std::size_t t = 0; t < sorted.size() && t < order.size(); ++t)
+      if (sorted[t] != keys[order[t]]) {
+        ADD_FAILURE() << name << ": key at " << t << " is " << sorted[t] << ", not " << keys[order[t]];
+        break;
+      }
+    return true;
+  };
   for (const auto& [name, bits] : masks) {
     std::vector<CellKey> keys(n);
     for (CellKey& k : keys)
@@ -179,6 +195,10 @@ TEST(broad_phase, the_sort_of_many_unguided_keys_equals_a_plain_sort_whichever_b
     Buffer<std::uint32_t> order;
     CellOrder().sort(keys, {}, order);
     EXPECT_EQ(order, plainly_sorted(keys)) << name;
+    // Packed, each field takes the bits of its range: the fields of bits 0 to 15 and 40 to 55 take 42.
+    const bool packs = std::string(name) != "bits 0 to 15 and 40 to 55: 32 bits in two runs" &&
+                       std::string(name) != "bits 0 to 32: 33 bits, too many to pack";
+    EXPECT_EQ(sort_with_keys(keys, name), packs) << name;
   }
   std::vector<CellKey> keys(n);
   for (CellKey& k : keys)
@@ -188,6 +208,7 @@ TEST(broad_phase, the_sort_of_many_unguided_keys_equals_a_plain_sort_whichever_b
   Buffer<std::uint32_t> order;
   CellOrder().sort(keys, {}, order);
   EXPECT_EQ(order, plainly_sorted(keys)) << "the layout";
+  EXPECT_FALSE(sort_with_keys(keys, "the layout")) << "the columns of the global circles and the rest take 21 bits";
   // A planned scene: cells around kCells / 2 on both axes (CellGrid::plan centres it there), so columns and
   // bands straddle a power of two and differ in every bit below it, on two levels.
   const std::uint32_t centre = G::kCells / 2;
@@ -198,6 +219,18 @@ TEST(broad_phase, the_sort_of_many_unguided_keys_equals_a_plain_sort_whichever_b
   }
   CellOrder().sort(keys, {}, order);
   EXPECT_EQ(order, plainly_sorted(keys)) << "a planned scene";
+  EXPECT_FALSE(sort_with_keys(keys, "a planned scene")) << "level 1's columns are a quarter of level 0's";
+  for (CellKey& k : keys)  // the same on level 0 alone: bands, rows and columns in 8 + 3 + 11 bits
+    k = G::pack(0, centre - 600 + static_cast<std::uint32_t>(random() % 1200),
+                centre - 600 + static_cast<std::uint32_t>(random() % 1200));
+  CellOrder().sort(keys, {}, order);
+  EXPECT_EQ(order, plainly_sorted(keys)) << "a planned scene on one level";
+  EXPECT_TRUE(sort_with_keys(keys, "a planned scene on one level"));
+  // Too few keys for the digits (std::sort), or keys guided by their previous order: no keys given.
+  EXPECT_FALSE(sort_with_keys(std::vector<CellKey>(keys.begin(), keys.begin() + 1000), "1,000 keys"));
+  Buffer<CellKey> sorted{CellKey{7}};
+  CellOrder().sort(keys, keys, order, 1, &sorted);
+  EXPECT_TRUE(sorted.empty()) << "a guided sort";
 }
 
 TEST(broad_phase, the_guided_re_sort_equals_a_plain_sort_when_every_slot_changes_column_within_its_band) {
