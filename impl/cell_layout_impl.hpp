@@ -44,7 +44,8 @@ void CellLayout::arrange(unsigned threads, std::uint64_t horizon, const Buffer<d
                          const Buffer<double>& inflated, Columns<T>... columns) {
   const std::size_t n = id_.size();
   pairs_.release();  // rebuilt by list() after this; memory peaks during the sort below otherwise
-  if (horizon != planned_horizon_) {
+  const bool planned = horizon != planned_horizon_;
+  if (planned) {
     grid_.plan(x, y, inflated);
     planned_horizon_ = horizon;
   }
@@ -53,8 +54,12 @@ void CellLayout::arrange(unsigned threads, std::uint64_t horizon, const Buffer<d
   // The first layout: no previous order to guide the sort, and id_ is still the identity.
   const bool first = key_.size() != n;
   if (first) key_.clear();
+  // A new plan gives every slot a key of other cells: the last keys would guide nothing, so the sort takes
+  // the first layout's way.
   Buffer<CellKey> sorted_keys;
-  const bool sorted = order_.sort(next_key_, key_, permutation_, threads, &sorted_keys);
+  const bool sorted =
+      order_.sort(next_key_, planned ? std::span<const CellKey>{} : std::span<const CellKey>{key_}, permutation_,
+                  threads, &sorted_keys);
   std::swap(key_, next_key_);
   if (!sorted) {
     // least_ is the identity between steps, so it stays.
