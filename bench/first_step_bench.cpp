@@ -1,10 +1,10 @@
-// The first step of a fresh process, for docs/benchmarks.md ("The first step, measured by hand"): the double
-// engine as `circles run --steps 1 --threads 1` steps it, or the plain grid of bench/baselines.hpp, on the
-// benchmarks' random scene, in the scene's own order. The scene is made and the stepper built before the clock
-// starts; the scene's copy is then given back, as `circles run` gives back its own before stepping.
-// engine_bench's plain-grid figure is a steady step: after an untimed warm-up step, with its memory written
-// and its circles left in cell order by the step before. This is the same stepper's first step, which pays
-// for both, as the double engine's first step does.
+// The first step of a fresh process, for docs/benchmarks.md ("The first step and the runs of known length,
+// measured by hand"): the double engine as `circles run --steps 1 --threads 1` steps it, or the plain grid of
+// bench/baselines.hpp, on the benchmarks' random scene, in the scene's own order. The scene is made and the
+// stepper built before the clock starts; the scene's copy is then given back, as `circles run` gives back its
+// own before stepping. engine_bench's plain-grid figure is a steady step: after an untimed warm-up step, with
+// its memory written and its circles left in cell order by the step before. This is the same stepper's first
+// step, which pays for both, as the double engine's first step does.
 //   first_step_bench --engine double|plain-grid --circles N [--coverage C] [--seed S]
 // Prints one line: the engine, the scene and the step's milliseconds. One step per process: a second step
 // in the same process would find its memory backed and its circles in order.
