@@ -359,6 +359,12 @@ class PairList {
     std::atomic_ref<unsigned char>(listed_[a]).store(1, std::memory_order_relaxed);
     std::atomic_ref<unsigned char>(listed_[b]).store(1, std::memory_order_relaxed);
   }
+  // The slots in no pair, once every pair is marked.
+  std::size_t unmarked() const { return static_cast<std::size_t>(std::count(listed_.begin(), listed_.end(), 0)); }
+  // global_ ← the pairs of a global slot (walk_global) that a list of `horizon` holds by `first`, each with its
+  // first step, and also handed to taken(pair).
+  template <class Taken>
+  void list_global(const CellView& view, const Lister& first, std::uint64_t horizon, Taken&& taken);
   // Chunk c's tester for a step: its touched slots and offers cleared, room made for them.
   template <class Intersect, class Precedes>
   ChunkContacts<Intersect, Precedes> chunk_contacts(std::size_t c, Buffer<std::uint32_t>& least,

@@ -72,6 +72,17 @@ void walk_global(const CellView& view, Pair&& pair) {
       if (b != g && (b < global || b > g)) pair(g, b);
 }
 
+template <class Taken>
+void PairList::list_global(const CellView& view, const Lister& first, std::uint64_t horizon, Taken&& taken) {
+  global_.clear();
+  walk_global(view, [&](std::size_t g, std::size_t b) {
+    const std::uint32_t step = first(g, b);
+    if (step > horizon) return;
+    global_.push_back({static_cast<std::uint32_t>(std::min(g, b)), static_cast<std::uint32_t>(std::max(g, b)), step});
+    taken(global_.back());
+  });
+}
+
 inline void PairList::build(const CellGrid& grid, const CellView& view, unsigned threads, std::uint64_t horizon,
                             const Lister& first) {
   const std::size_t n = view.key.size();
@@ -121,13 +132,7 @@ inline void PairList::build(const CellGrid& grid, const CellView& view, unsigned
     chunk.size = size;
     tally[c] = mine;
   });
-  global_.clear();
-  walk_global(view, [&](std::size_t g, std::size_t b) {
-    const std::uint32_t step = first(g, b);
-    if (step > horizon) return;
-    global_.push_back({static_cast<std::uint32_t>(std::min(g, b)), static_cast<std::uint32_t>(std::max(g, b)), step});
-    take(tally[chunks], global_.back());
-  });
+  list_global(view, first, horizon, [&](const ListedPair& p) { take(tally[chunks], p); });
   // Per chunk, the rest of a counting sort by (block, bucket), stable, so each bucket stays in slot order: the
   // pairs are by first slot already, so each block's pairs are one run, sorted by bucket where it is through a
   // copy of that run alone.
@@ -156,7 +161,7 @@ inline void PairList::build(const CellGrid& grid, const CellView& view, unsigned
     tests_ += tests;
     earliest_ = std::min(earliest_, earliest);
   }
-  lonely_ = static_cast<std::size_t>(std::count(listed_.begin(), listed_.end(), 0));
+  lonely_ = unmarked();
 }
 
 // One chunk's contacts in a step: test(a, b) tests a pair with `intersect` and offers an intersecting one to
@@ -294,18 +299,13 @@ std::size_t PairList::contacts_now(const CellGrid& grid, const CellView& view, u
               });
     counts[c] = {contacts.seen, contacts.hits};
   });
-  global_.clear();
-  walk_global(view, [&](std::size_t g, std::size_t b) {
-    if (first(g, b) != 0) return;
-    mark(g, b);
-    global_.push_back({static_cast<std::uint32_t>(std::min(g, b)), static_cast<std::uint32_t>(std::max(g, b)), 0});
-  });
+  list_global(view, first, 0, [&](const ListedPair& p) { mark(p.a, p.b); });
   const std::size_t contacts = offer_the_rest(counts, global_, 0, least, touched, tested, intersect, precedes);
   global_.clear();
   size_ = 0;
   tests_ = tested;
   earliest_ = 1;
-  lonely_ = static_cast<std::size_t>(std::count(listed_.begin(), listed_.end(), 0));
+  lonely_ = unmarked();
   return contacts;
 }
 
