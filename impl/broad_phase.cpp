@@ -419,6 +419,12 @@ bool candidates_cover_all_intersecting_pairs(std::span<const double> px, std::sp
   return true;
 }
 
+bool few_per_cell(std::span<const CellKey> key) noexcept {
+  std::size_t cells = key.empty() ? 0 : 1;
+  for (std::size_t t = 1; t < key.size(); ++t) cells += key[t] != key[t - 1];
+  return static_cast<double>(key.size()) <= kFewPerCell * static_cast<double>(cells);
+}
+
 void index_levels(std::span<const CellKey> key, std::array<std::size_t, CellGrid::kLevels + 1>& level_begin,
                   std::vector<unsigned>& levels) {
   levels.clear();

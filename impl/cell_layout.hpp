@@ -130,7 +130,7 @@ class CellLayout {
   void list(EngineStats& stats, const EngineOptions& options, unsigned threads, std::uint64_t horizon,
             const Buffer<double>& x, const Buffer<double>& y, const Buffer<double>& inflated,
             const Lister& lister) {
-    const CellView view{key_, x, y, inflated, levels_, level_begin_};
+    const CellView view{key_, x, y, inflated, levels_, level_begin_, wide_runs_};
     pairs_.build(grid_, view, threads, horizon, lister);
     built_at_ = stats.steps;
     stats.pairs_listed += pairs_.size();
@@ -144,7 +144,7 @@ class CellLayout {
   // same `lister`, testing the pairs that list would hold. The columns must stay where they are until then.
   void list_in_step(EngineStats& stats, const EngineOptions& options, const Buffer<double>& x,
                     const Buffer<double>& y, const Buffer<double>& inflated, const Lister& lister) {
-    in_step_ = InStep{CellView{key_, x, y, inflated, levels_, level_begin_}, lister, learns(options)};
+    in_step_ = InStep{CellView{key_, x, y, inflated, levels_, level_begin_, wide_runs_}, lister, learns(options)};
     built_at_ = stats.steps;
     ++stats.rebuilds;
     rebuild_at_ = stats.steps + 1;
@@ -182,6 +182,7 @@ class CellLayout {
   Buffer<CellKey> key_, next_key_;  // by the inflated radii of the last rebuild
   std::vector<unsigned> levels_;          // the levels that hold a circle, ascending, the global level excluded
   std::array<std::size_t, CellGrid::kLevels + 1> level_begin_{};  // level L: [level_begin[L], level_begin[L + 1])
+  bool wide_runs_ = false;  // few_per_cell(key_): the walk's form for these keys
   CellGrid grid_;
   CellOrder order_;
   PairList pairs_;

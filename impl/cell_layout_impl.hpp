@@ -79,6 +79,7 @@ void CellLayout::arrange(unsigned threads, std::uint64_t horizon, const Buffer<d
     }
   }
   index_levels(key_, level_begin_, levels_);
+  wide_runs_ = few_per_cell(key_);
   // The sort's scratch (the permutation and the old keys, 12 bytes a circle) is given back before the list
   // is built, where memory peaks, and taken again at the next rebuild; gather() gives back its own.
   Buffer<std::uint32_t>().swap(permutation_);

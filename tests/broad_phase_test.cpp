@@ -1,6 +1,7 @@
 // The broad phase's walk and order (impl/broad_phase.hpp), checked directly against their definitions rather
 // than only through the engines: every pair of neighbouring cells is visited exactly once, from the earlier
-// slot, across band boundaries and levels; and CellOrder's sorts, guided or by digits, equal a plain sort.
+// slot, across band boundaries and levels, with narrow runs and with wide ones; and CellOrder's sorts, guided
+// or by digits, equal a plain sort.
 #include "impl/broad_phase.hpp"
 #include "impl/contacts.hpp"
 
@@ -30,7 +31,7 @@ struct Sorted {
   std::vector<double> px, py, r;
   std::vector<unsigned> levels;
   std::array<std::size_t, G::kLevels + 1> level_begin{};
-  CellView view() const { return {key, px, py, r, levels, level_begin}; }
+  CellView view(bool wide_runs = false) const { return {key, px, py, r, levels, level_begin, wide_runs}; }
 };
 
 Sorted sorted(const std::vector<std::array<double, 3>>& circles) {
@@ -83,32 +84,77 @@ std::vector<std::array<double, 3>> busy_world(unsigned seed) {
   return circles;
 }
 
+// The slots that a wide run may add to a's neighbours (visit_neighbourhood_runs): at a's level, in a's band,
+// a's column above a or the next column; or, from its band's top row, the band above in columns cx − 1 … cx + 1.
+bool in_wide_runs(const Sorted& s, std::size_t a, std::size_t b) {
+  if (G::level(s.key[a]) != G::level(s.key[b])) return false;
+  const std::uint32_t ax = G::cell_x(s.key[a]), ay = G::cell_y(s.key[a]);
+  const std::uint32_t bx = G::cell_x(s.key[b]), by = G::cell_y(s.key[b]);
+  const std::uint32_t band = ay / G::kBandRows;
+  if (by / G::kBandRows == band) return bx == ax || bx == ax + 1;
+  return ay % G::kBandRows == G::kBandRows - 1 && by / G::kBandRows == band + 1 && bx + 1 >= ax && bx <= ax + 1;
+}
+
+// Every pair of neighbouring cells visited exactly once from the earlier slot, and no other pair: with wide
+// runs, other pairs at most once each, all of them of the shape the wide runs allow. Returns the pairs visited
+// that are not neighbours.
+std::size_t check_walk(const Sorted& s, bool wide_runs, unsigned seed) {
+  const std::size_t n = s.key.size();
+  std::map<std::pair<std::size_t, std::size_t>, int> visits;
+  NeighbourCursor cursor;
+  for (std::size_t a = 0; a < n; ++a)
+    visit_neighbourhood(s.grid, s.view(wide_runs), a, cursor, [&](std::size_t b) {
+      EXPECT_GT(b, a);
+      ++visits[{a, b}];
+    });
+  std::size_t expected = 0, across_bands = 0, others = 0;
+  for (std::size_t a = 0; a < n; ++a)
+    for (std::size_t b = a + 1; b < n; ++b) {
+      const bool want = neighbours(s, a, b);
+      const auto found = visits.find({a, b});
+      const int got = found == visits.end() ? 0 : found->second;
+      const std::string where = "slots " + std::to_string(a) + " and " + std::to_string(b) + " (seed " +
+                                std::to_string(seed) + (wide_runs ? ", wide runs)" : ")");
+      if (want || !wide_runs) {
+        EXPECT_EQ(got, want ? 1 : 0) << where;
+      } else {
+        EXPECT_LE(got, 1) << where;
+        if (got > 0) {
+          EXPECT_TRUE(in_wide_runs(s, a, b)) << where;
+        }
+        others += got;
+      }
+      expected += want;
+      across_bands += want && G::level(s.key[a]) == G::level(s.key[b]) &&
+                      G::cell_y(s.key[a]) / G::kBandRows != G::cell_y(s.key[b]) / G::kBandRows;
+    }
+  EXPECT_EQ(visits.size(), expected + others);
+  EXPECT_GT(across_bands, 100u) << "the world must put many neighbours across a band boundary";
+  return others;
+}
+
 TEST(broad_phase, the_walk_visits_every_pair_of_neighbouring_cells_once_from_the_earlier_slot) {
   for (unsigned seed = 1; seed <= 3; ++seed) {
     const Sorted s = sorted(busy_world(seed));
-    const std::size_t n = s.key.size();
     ASSERT_GE(s.levels.size(), 2u) << "the world must use more than one level";
-    std::map<std::pair<std::size_t, std::size_t>, int> visits;
-    NeighbourCursor cursor;
-    for (std::size_t a = 0; a < n; ++a)
-      visit_neighbourhood(s.grid, s.view(), a, cursor, [&](std::size_t b) {
-        EXPECT_GT(b, a);
-        ++visits[{a, b}];
-      });
-    std::size_t expected = 0, across_bands = 0;
-    for (std::size_t a = 0; a < n; ++a)
-      for (std::size_t b = a + 1; b < n; ++b) {
-        const bool want = neighbours(s, a, b);
-        const auto found = visits.find({a, b});
-        const int got = found == visits.end() ? 0 : found->second;
-        ASSERT_EQ(got, want ? 1 : 0) << "slots " << a << " and " << b << " (seed " << seed << ")";
-        expected += want;
-        across_bands += want && G::level(s.key[a]) == G::level(s.key[b]) &&
-                        G::cell_y(s.key[a]) / G::kBandRows != G::cell_y(s.key[b]) / G::kBandRows;
-      }
-    EXPECT_EQ(visits.size(), expected);
-    EXPECT_GT(across_bands, 100u) << "the world must put many neighbours across a band boundary";
+    EXPECT_EQ(check_walk(s, false, seed), 0u);
   }
+}
+
+TEST(broad_phase, wide_runs_visit_the_same_neighbours_once_and_other_slots_of_their_columns_at_most_once) {
+  for (unsigned seed = 1; seed <= 3; ++seed) {
+    const Sorted s = sorted(busy_world(seed));
+    EXPECT_GT(check_walk(s, true, seed), 1000u) << "the wide runs must visit slots beyond the neighbours";
+  }
+}
+
+TEST(broad_phase, the_walk_takes_wide_runs_where_the_cells_that_hold_slots_hold_one_and_a_half_or_fewer) {
+  // Three cells holding 1, 1 and 2 slots: 4 slots ≤ 1.5 · 3 cells. One more slot in the last: 5 > 4.5.
+  EXPECT_TRUE(few_per_cell(std::vector<CellKey>{1, 5, 9, 9}));
+  EXPECT_FALSE(few_per_cell(std::vector<CellKey>{1, 5, 9, 9, 9}));
+  EXPECT_TRUE(few_per_cell(std::vector<CellKey>{}));
+  EXPECT_TRUE(few_per_cell(std::vector<CellKey>{7}));
+  EXPECT_FALSE(few_per_cell(std::vector<CellKey>{7, 7}));
 }
 
 TEST(broad_phase, keys_order_cells_by_level_band_column_then_row_within_the_band) {
