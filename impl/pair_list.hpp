@@ -173,9 +173,11 @@ struct Lister {
   double step;
   std::uint64_t horizon;
 
-  [[gnu::always_inline]] bool near(std::size_t a, std::size_t b) const noexcept {
-    const double dx = px[b] - px[a], dy = py[b] - py[a];
-    return !certainly_disjoint_of_squares(dx * dx + dy * dy, ri[a] + ri[b], filter::kAbsolute);
+  [[gnu::always_inline]] bool near(std::size_t a, std::size_t b) const noexcept { return near_to(px[a], py[a], ri[a], b); }
+  // near(a, b) from a's values (ax, ay, ari) = (px[a], py[a], ri[a]), which a loop over b holds in registers.
+  [[gnu::always_inline]] bool near_to(double ax, double ay, double ari, std::size_t b) const noexcept {
+    const double dx = px[b] - ax, dy = py[b] - ay;
+    return !certainly_disjoint_of_squares(dx * dx + dy * dy, ari + ri[b], filter::kAbsolute);
   }
   [[gnu::always_inline]] std::uint32_t operator()(std::size_t a, std::size_t b) const noexcept {
     return listing_step(px[a], py[a], r[a], ri[a], px[b], py[b], r[b], ri[b], step, horizon);
@@ -355,9 +357,12 @@ class PairList {
     listed_.reserve(n);
     listed_.assign(n, 0);
   }
-  void mark(std::size_t a, std::size_t b) noexcept {
-    std::atomic_ref<unsigned char>(listed_[a]).store(1, std::memory_order_relaxed);
-    std::atomic_ref<unsigned char>(listed_[b]).store(1, std::memory_order_relaxed);
+  void mark(std::size_t a, std::size_t b) noexcept { mark_in(listed_.data(), a, b); }
+  // The same through the marks' address, which a loop holds in a register: a char store may alias anything,
+  // the vector's own pointer included, so listed_.data() would be read again after every mark.
+  static void mark_in(unsigned char* listed, std::size_t a, std::size_t b) noexcept {
+    std::atomic_ref<unsigned char>(listed[a]).store(1, std::memory_order_relaxed);
+    std::atomic_ref<unsigned char>(listed[b]).store(1, std::memory_order_relaxed);
   }
   // The slots in no pair, once every pair is marked.
   std::size_t unmarked() const { return static_cast<std::size_t>(std::count(listed_.begin(), listed_.end(), 0)); }

@@ -46,10 +46,16 @@ void walk_near(const CellGrid& grid, const CellView& view, std::size_t begin, st
       // anything, so values in memory would be read again for every candidate.
       const Lister near = lister;
       const CellKey* const key = view.key.data();
+      // a's values, the view's size and the kept array's address as locals too: the hand-over inside the loop
+      // calls out, after which values reached through this lambda's captures would be read again for every
+      // candidate.
+      const double ax = near.px[a], ay = near.py[a], ari = near.ri[a];
+      const std::size_t slots = n;
+      std::uint32_t* const into = kept;
       std::size_t held = kept_so_far, b = from;
-      for (; b < n && key[b] <= last; ++b) {
-        kept[held] = static_cast<std::uint32_t>(b);
-        held += near.near(a, b);
+      for (; b < slots && key[b] <= last; ++b) {
+        into[held] = static_cast<std::uint32_t>(b);
+        held += near.near_to(ax, ay, ari, b);
         if (held == kKept) [[unlikely]] {
           hand_over(held);
           held = 0;
@@ -93,10 +99,10 @@ inline void PairList::build(const CellGrid& grid, const CellView& view, unsigned
   clear_marks(n);
   // A listed pair counted in a tally (its tests over the horizon, its earliest first step) and its slots marked.
   using Tally = std::array<std::uint64_t, 2>;
-  const auto take = [this, horizon](Tally& into, const ListedPair& p) {
+  const auto take = [marks = listed_.data(), horizon](Tally& into, const ListedPair& p) {
     into[0] += horizon + 1 - p.first;
     into[1] = std::min<std::uint64_t>(into[1], p.first);
-    mark(p.a, p.b);
+    mark_in(marks, p.a, p.b);
   };
   std::vector<Tally> tally(chunks + 1, Tally{0, horizon + 1});  // per chunk, then the global pairs'
   // The pairs of each chunk in the order the broad phase offers them (by first slot), each counted in its
@@ -119,13 +125,20 @@ inline void PairList::build(const CellGrid& grid, const CellView& view, unsigned
     std::size_t size = 0;
     Tally mine{0, horizon + 1};  // a local, kept in registers, written to tally[c] at the end
     const Lister first_of = first;
+    // The pairs' address and room as locals, read again only when the room grows: the marks' char stores
+    // would otherwise make the compiler read them from the vector after every pair.
+    ListedPair* out = found.data();
+    std::size_t capacity = found.size();
     walk_near(grid, view, begin, end, first, [&](std::size_t a, std::size_t b) {
       const std::uint32_t step = first_of(a, b);
       if (step > horizon) return;
-      if (size == found.size()) [[unlikely]]
+      if (size == capacity) [[unlikely]] {
         found.resize(size + size / 2);
+        out = found.data();
+        capacity = found.size();
+      }
       const ListedPair p{static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b), step};
-      found[size++] = p;
+      out[size++] = p;
       ++count[(a - begin) / kBlockSlots * kBuckets + std::min(step, kBuckets - 1)];
       take(mine, p);
     });
