@@ -286,6 +286,9 @@ class PairList {
   // 0.1% coverage, H = 32: 8.2 ns per circle-step without prefetching, 6.6 with 8 ahead, 5.9–6.3 with 16);
   // at 10% coverage a slot's pairs are neighbours in memory and it changes nothing measurable.
   static constexpr std::size_t kPrefetchAhead = 16;
+  // least_contacts tests this many pairs before it offers the contacts among them: enough that the loop over
+  // the offers is one loop per block of a slot's pairs, few enough that their indices fit on the stack.
+  static constexpr std::size_t kTestBlock = 256;
 
   // Gives the pairs' memory back, keeping each chunk's count, the room the next build makes at once: a
   // rebuild's sort runs between the two, and would otherwise hold the old list beside its own lists (at 10^7
