@@ -199,15 +199,27 @@ class KeyPacking {
   int bits_ = 0;
 };
 
-// One stable pass of an LSD radix sort: `to` gets `from` ordered by the kRadixBits-bit digit(e).
+// One stable pass of an LSD radix sort: `to` gets `from` ordered by the kRadixBits-bit digit(e), over
+// `chunks` parts of `from` on up to `threads` threads. Each part counts its digits; a digit's entries then go
+// to the output part by part, each part's from its own offset, which is the order one pass over the whole list
+// gives: the same result for every part count.
+using DigitCounts = std::array<std::uint32_t, std::size_t{1} << kRadixBits>;  // fewer than 2^32 slots
 template <class T, class Digit>
-void radix_pass(std::span<const T> from, std::span<T> to, Digit digit) {
-  constexpr std::size_t kRadix = std::size_t{1} << kRadixBits;
-  std::array<std::uint32_t, kRadix> at{};  // CellOrder::sort takes fewer than 2^32 slots
-  for (const T& e : from) ++at[digit(e)];
+void radix_pass(std::span<const T> from, std::span<T> to, Digit digit, std::size_t chunks = 1, unsigned threads = 1) {
+  const std::size_t n = from.size();
+  std::vector<DigitCounts> at(chunks, DigitCounts{});
+  for_each_chunk(chunks, threads, [&](std::size_t c) {
+    DigitCounts& count = at[c];
+    for (std::size_t t = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1); t < e; ++t) ++count[digit(from[t])];
+  });
   std::uint32_t sum = 0;
-  for (std::uint32_t& a : at) sum += std::exchange(a, sum);
-  for (const T& e : from) to[at[digit(e)]++] = e;
+  for (std::size_t d = 0; d < at[0].size(); ++d)
+    for (DigitCounts& count : at) sum += std::exchange(count[d], sum);
+  for_each_chunk(chunks, threads, [&](std::size_t c) {
+    DigitCounts& place = at[c];
+    for (std::size_t t = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1); t < e; ++t)
+      to[place[digit(from[t])]++] = from[t];
+  });
 }
 
 // Sorts entries that are in ascending slot order by key, stably, so into kBefore's (key, slot) order, in time
@@ -250,30 +262,38 @@ void repair(Buffer<Entry>& list, Buffer<Entry>& scratch) {
   }
 }
 
-// The first layout's sort (no previous keys to guide it): the slots by (key, slot) through 8-byte entries,
-// the packed key (KeyPacking) in the upper half and the slot in the lower, half the bytes of an Entry, sorted
-// by the packed bits as sort_slot_ordered sorts Entries; the input is in slot order, so ties stay in slot
-// order. The sorted entries then give `order` and, unpacked in place, `sorted` (keys[order[t]]), which a
-// gather would read at random. Returns false, with `order` and `sorted` untouched, when the packed keys take
-// more than 32 bits or the keys are fewer than kRadixFrom (the general path sorts those with std::sort).
-bool sort_packed(std::span<const CellKey> keys, Buffer<std::uint32_t>& order, Buffer<CellKey>& sorted) {
+// The sort by digits, guided by nothing: the slots by (key, slot) through 8-byte entries, the packed key
+// (KeyPacking) in the upper half and the slot in the lower, half the bytes of an Entry, sorted by the packed
+// bits as sort_slot_ordered sorts Entries, each pass in parts on up to `threads` threads; the input is in slot
+// order, so ties stay in slot order. The sorted entries then give `order` and, unpacked in place, `sorted`
+// (keys[order[t]]), which a gather would otherwise read. Returns false, with `order` and `sorted` untouched,
+// when the packed keys take more than 32 bits or the keys are fewer than kRadixFrom (the guided path sorts
+// those).
+bool sort_packed(std::span<const CellKey> keys, Buffer<std::uint32_t>& order, Buffer<CellKey>& sorted,
+                 unsigned threads) {
   static_assert(std::is_same_v<CellKey, std::uint64_t>, "an entry becomes its key in place");
   const std::size_t n = keys.size();
   if (n < kRadixFrom) return false;
   const KeyPacking packing(keys, [](CellKey k) { return k; });
   if (packing.bits() > 32) return false;
+  const std::size_t chunks = chunk_count(n, threads);
+  const auto each = [&](auto&& f) {
+    for_each_chunk(chunks, threads, [&](std::size_t c) {
+      for (std::size_t t = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1); t < e; ++t) f(t);
+    });
+  };
   Buffer<std::uint64_t> from, to;
   from.resize(n);
-  for (std::size_t s = 0; s < n; ++s) from[s] = packing(keys[s]) << 32 | s;
+  each([&](std::size_t s) { from[s] = packing(keys[s]) << 32 | s; });
   to.resize(n);
   for (int shift = 32; shift < 32 + packing.bits(); shift += kRadixBits) {
-    radix_pass<std::uint64_t>(from, to, [shift](std::uint64_t e) { return (e >> shift) & kDigit; });
+    radix_pass<std::uint64_t>(from, to, [shift](std::uint64_t e) { return (e >> shift) & kDigit; }, chunks, threads);
     from.swap(to);
   }
-  for (std::size_t t = 0; t < n; ++t) {
+  each([&](std::size_t t) {
     order[t] = static_cast<std::uint32_t>(from[t]);
     from[t] = packing.unpack(from[t] >> 32);
-  }
+  });
   sorted.swap(from);
   return true;
 }
@@ -374,7 +394,7 @@ bool CellOrder::sort(std::span<const CellKey> keys, std::span<const CellKey> pre
     return true;
   }
   Buffer<CellKey> unwanted;
-  if (previous.size() != n && sort_packed(keys, order, sorted ? *sorted : unwanted)) return false;
+  if (sort_packed(keys, order, sorted ? *sorted : unwanted, threads)) return false;
   // Parts need the previous keys, sorted, as splitters: without them, one chunk does it all.
   const std::size_t chunks = previous.size() == n ? chunk_count(n, threads) : 1;
   chunks_.resize(chunks);

@@ -162,10 +162,15 @@ class CellGrid {
 
 // ── The order ─────────────────────────────────────────────────────────────────────────────────────────
 
-// The permutation that sorts keys, computed in linear time when keys are nearly sorted already, on up to
-// `threads` threads.
+// The permutation that sorts keys, in linear time, on up to `threads` threads. Keys whose fields pack into 32
+// bits (KeyPacking in broad_phase.cpp; every single-level scene measured) are sorted by digits, an LSD radix
+// sort of 8-byte entries in two or three passes, each in parts on the threads. The others are sorted guided by
+// their previous keys, in linear time when they are nearly sorted already. The digits are the faster where
+// both apply: at 10^6 circles and 10% coverage, with lists of 6 steps, a guided re-sort made its rebuild 178 ms
+// against 143 by digits; at 0.1%, and with velocities a twentieth of the scene's, the digits were as fast or
+// faster.
 //
-// In parallel, slots are split into chunks, and the output into parts by the previous keys at the chunks'
+// Guided and in parallel, slots are split into chunks, and the output into parts by the previous keys at the chunks'
 // first slots (the previous keys are sorted, so part c is the key range that chunk c held): every key of part
 // c is less than every key of part c + 1. Each chunk sorts the slots whose key stayed in its own part (most
 // of them; the guided repair below) and hands the others to their parts; each part then merges what it kept
@@ -175,10 +180,10 @@ class CellOrder {
  public:
   // Sets `order` to the slots of `keys` in ascending key order (ties in slot order): keys[order[0]] ≤
   // keys[order[1]] ≤ …. `previous` holds the keys the same slots had when they were last sorted (ascending
-  // by slot), or is empty; it only guides the work, never the result. Returns true when `keys` were sorted
-  // already (`order` is then the identity). `sorted`, when given, is emptied, and then holds keys[order[t]]
-  // at t when the sort had them in that order at no cost (the unguided sort of kRadixFrom keys or more, in
-  // its own scratch); a caller that finds it empty gathers the keys itself.
+  // by slot), or is empty; it only guides the work of keys that do not pack, never the result. Returns true
+  // when `keys` were sorted already (`order` is then the identity). `sorted`, when given, is emptied, and then
+  // holds keys[order[t]] at t when the sort had them in that order at no cost (the sort by digits of
+  // kRadixFrom keys or more, in its own scratch); a caller that finds it empty gathers the keys itself.
   bool sort(std::span<const CellKey> keys, std::span<const CellKey> previous, Buffer<std::uint32_t>& order,
             unsigned threads = 1, Buffer<CellKey>* sorted = nullptr);
 

@@ -118,8 +118,9 @@ class CellLayout {
   void collapse() noexcept { schedule_.collapse(); }
 
   // The slots in cell order for circles at (x, y) with radii `inflated` (all by slot): the grid planned
-  // again when the horizon changed, keys, CellOrder's sort guided by the last keys, and, when the order
-  // changed, one gather of the id, the keys and every registered column (x, y and inflated among them).
+  // again when the horizon changed, keys, CellOrder's sort (by digits, or guided by the last keys), and, when
+  // the order changed, one gather of the id, the keys and every registered column (x, y and inflated among
+  // them).
   template <class... T>
   void arrange(unsigned threads, std::uint64_t horizon, const Buffer<double>& x, const Buffer<double>& y,
                const Buffer<double>& inflated, Columns<T>... columns);

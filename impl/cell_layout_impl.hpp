@@ -54,8 +54,8 @@ void CellLayout::arrange(unsigned threads, std::uint64_t horizon, const Buffer<d
   // The first layout: no previous order to guide the sort, and id_ is still the identity.
   const bool first = key_.size() != n;
   if (first) key_.clear();
-  // A new plan gives every slot a key of other cells: the last keys would guide nothing, so the sort takes
-  // the first layout's way.
+  // The sort goes by digits where the keys pack (CellOrder); the last keys guide only keys that do not. A new
+  // plan gives every slot a key of other cells: then the last keys would guide nothing, and are not given.
   Buffer<CellKey> sorted_keys;
   const bool sorted =
       order_.sort(next_key_, planned ? std::span<const CellKey>{} : std::span<const CellKey>{key_}, permutation_,

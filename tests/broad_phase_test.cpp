@@ -14,6 +14,7 @@
 #include <map>
 #include <numeric>
 #include <random>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -181,6 +182,19 @@ Buffer<std::uint32_t> plainly_sorted(const std::vector<CellKey>& keys) {
   return order;
 }
 
+// A key far from every scene of these tests: with it among them, the keys' fields take 54 bits, too many to
+// pack into the digits' entries, so the sort is the guided one.
+constexpr CellKey kFarthest = G::pack(0, G::kCells - 1, G::kCells - 1);
+
+// CellOrder::sort guided by `previous`: the keys must not pack, or the digits would sort them.
+bool guided_sort(const std::vector<CellKey>& keys, std::span<const CellKey> previous, Buffer<std::uint32_t>& order,
+                 unsigned threads = 1) {
+  Buffer<CellKey> sorted;
+  const bool already = CellOrder().sort(keys, previous, order, threads, &sorted);
+  EXPECT_TRUE(sorted.empty()) << "the keys packed: the sort went by digits, not guided";
+  return already;
+}
+
 TEST(broad_phase, the_guided_re_sort_equals_a_plain_sort_after_moves_within_and_across_bands) {
   const Sorted s = sorted(busy_world(7));
   const std::size_t n = s.key.size();
@@ -196,8 +210,9 @@ TEST(broad_phase, the_guided_re_sort_equals_a_plain_sort_after_moves_within_and_
     };
     moved[t] = G::pack(G::level(k), shift(G::cell_y(k)), shift(G::cell_x(k)));
   }
+  moved[n / 2] = kFarthest;
   Buffer<std::uint32_t> guided;
-  CellOrder().sort(moved, s.key, guided);
+  guided_sort(moved, s.key, guided);
   EXPECT_EQ(guided, plainly_sorted(moved));
 }
 
@@ -220,10 +235,10 @@ TEST(broad_phase, the_sort_of_many_unguided_keys_equals_a_plain_sort_whichever_b
   };
   // The sort also gives the keys in their new order when its packed entries hold them (at most 32 bits of
   // fields that differ): each must be keys[order[t]], unpacked from its entry.
-  const auto sort_with_keys = [](const std::vector<CellKey>& keys, const std::string& name) {
+  const auto sort_with_keys = [](const std::vector<CellKey>& keys, const std::string& name, bool guided = false) {
     Buffer<std::uint32_t> order;
     Buffer<CellKey> sorted{CellKey{7}};  // emptied by the sort unless it writes the keys
-    CellOrder().sort(keys, {}, order, 1, &sorted);
+    CellOrder().sort(keys, guided ? std::span<const CellKey>(keys) : std::span<const CellKey>(), order, 1, &sorted);
     EXPECT_EQ(order, plainly_sorted(keys)) << name;
     if (sorted.empty()) return false;
     EXPECT_EQ(sorted.size(), keys.size()) << name;
@@ -274,9 +289,32 @@ TEST(broad_phase, the_sort_of_many_unguided_keys_equals_a_plain_sort_whichever_b
   EXPECT_TRUE(sort_with_keys(keys, "a planned scene on one level"));
   // Too few keys for the digits (std::sort), or keys guided by their previous order: no keys given.
   EXPECT_FALSE(sort_with_keys(std::vector<CellKey>(keys.begin(), keys.begin() + 1000), "1,000 keys"));
-  Buffer<CellKey> sorted{CellKey{7}};
-  CellOrder().sort(keys, keys, order, 1, &sorted);
-  EXPECT_TRUE(sorted.empty()) << "a guided sort";
+  // Keys that pack are sorted by digits whether or not their previous keys are given.
+  EXPECT_TRUE(sort_with_keys(keys, "a planned scene on one level, guided", true));
+}
+
+TEST(broad_phase, the_sort_by_digits_in_parts_on_several_threads_equals_a_plain_sort) {
+  // 40,000 slots, so that two and three threads split each pass into parts (kParallelFrom); the keys take
+  // three digits (cells 0 to 2,999 on both axes), and many repeat, so the slot order of ties must survive
+  // each pass's hand-over from part to part.
+  std::mt19937_64 random(23);
+  const std::size_t n = 40000;
+  std::vector<CellKey> keys(n);
+  for (CellKey& k : keys)
+    k = G::pack(0, static_cast<std::uint32_t>(random() % 3000), static_cast<std::uint32_t>(random() % 3000 / 7));
+  for (const unsigned threads : {1u, 2u, 3u}) {
+    Buffer<std::uint32_t> order;
+    Buffer<CellKey> sorted;
+    EXPECT_FALSE(CellOrder().sort(keys, keys, order, threads, &sorted));
+    EXPECT_GT(chunk_count(n, threads), threads > 1 ? 1u : 0u);
+    EXPECT_EQ(order, plainly_sorted(keys)) << threads << " threads";
+    ASSERT_EQ(sorted.size(), n) << threads << " threads: the digits give the keys";
+    for (std::size_t t = 0; t < n; ++t)
+      if (sorted[t] != keys[order[t]]) {
+        ADD_FAILURE() << threads << " threads: key at " << t;
+        break;
+      }
+  }
 }
 
 TEST(broad_phase, the_guided_re_sort_equals_a_plain_sort_when_every_slot_changes_column_within_its_band) {
@@ -290,8 +328,9 @@ TEST(broad_phase, the_guided_re_sort_equals_a_plain_sort_when_every_slot_changes
   std::sort(previous.begin(), previous.end());
   for (std::size_t t = 0; t < n; ++t)
     moved[t] = G::pack(0, G::cell_y(previous[t]), static_cast<std::uint32_t>(random() % 500));
+  moved[n - 1] = kFarthest;
   Buffer<std::uint32_t> guided;
-  EXPECT_FALSE(CellOrder().sort(moved, previous, guided));
+  EXPECT_FALSE(guided_sort(moved, previous, guided));
   EXPECT_EQ(guided, plainly_sorted(moved));
 }
 
@@ -330,9 +369,12 @@ TEST(broad_phase, the_re_sort_in_parts_on_several_threads_equals_a_plain_sort) {
       while (part + 1 < chunks && previous[chunk_begin(n, chunks, part + 1)] <= moved[t]) ++part;
       crossed += part != t * chunks / n;
     }
+    moved[n - 1] = kFarthest;
     Buffer<std::uint32_t> parted;
     CellOrder order;
-    EXPECT_FALSE(order.sort(moved, previous, parted, threads));
+    Buffer<CellKey> sorted;
+    EXPECT_FALSE(order.sort(moved, previous, parted, threads, &sorted));
+    EXPECT_TRUE(sorted.empty()) << "the keys packed: the sort went by digits, not guided";
     EXPECT_EQ(parted, plainly_sorted(moved)) << threads << " threads";
     if (threads > 1) {
       EXPECT_GT(chunks, 1u);
