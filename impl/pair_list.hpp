@@ -289,6 +289,12 @@ class PairList {
   // least_contacts tests this many pairs before it offers the contacts among them: enough that the loop over
   // the offers is one loop per block of a slot's pairs, few enough that their indices fit on the stack.
   static constexpr std::size_t kTestBlock = 256;
+  // A first build's room, in pairs per slot (build()). The dense scene's first list (10^6 circles, 10%, 6
+  // steps) holds 2.1 a slot: from one a slot it grew twice, through 57 MB of new memory where 25 MB hold the
+  // list, and new memory costs more than the copies (up to 2 ms a MB on a virtual machine whose host backs
+  // the pages as they are first written). Four a slot hold it at once, as 48 bytes a circle of address space,
+  // six columns' worth.
+  static constexpr std::size_t kFirstRoom = 4;
 
   // Gives the pairs' memory back, keeping each chunk's count, the room the next build makes at once: a
   // rebuild's sort runs between the two, and would otherwise hold the old list beside its own lists (at 10^7

@@ -115,9 +115,10 @@ inline void PairList::build(const CellGrid& grid, const CellView& view, unsigned
     chunk.starts.assign((end - begin + kBlockSlots - 1) / kBlockSlots * kBuckets + 1, 0);
     std::uint32_t* const count = chunk.starts.data() + 1;
     // The room: the last build's count and an eighth; with no count to go by (a first build, or a last one
-    // that listed nothing here), a pair per slot, which costs address space only (a Buffer's pages are backed
-    // as they are written), so that a first list does not grow by copies through new memory.
-    const std::size_t room = chunk.size > 0 ? chunk.size + chunk.size / 8 + 1024 : std::max<std::size_t>(end - begin, 1024);
+    // that listed nothing here), kFirstRoom pairs per slot, which cost address space only (a Buffer's pages
+    // are backed as they are written), so that a first list does not grow by copies through new memory.
+    const std::size_t room = chunk.size > 0 ? chunk.size + chunk.size / 8 + 1024
+                                            : std::max<std::size_t>(kFirstRoom * (end - begin), 1024);
     if (found.size() < room) {
       found.clear();  // nothing in it is kept: the build writes every pair again
       found.resize(room);
