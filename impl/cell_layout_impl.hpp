@@ -56,21 +56,16 @@ void CellLayout::arrange(unsigned threads, std::uint64_t horizon, const Buffer<d
   if (first) key_.clear();
   // The sort goes by digits where the keys pack (CellOrder); the last keys guide only keys that do not. A new
   // plan gives every slot a key of other cells: then the last keys would guide nothing, and are not given.
-  Buffer<CellKey> sorted_keys;
-  const bool sorted =
-      order_.sort(next_key_, planned ? std::span<const CellKey>{} : std::span<const CellKey>{key_}, permutation_,
-                  threads, &sorted_keys);
+  // The keys are left in the new order by the sort itself.
+  const bool sorted = order_.sort_in_place(
+      next_key_, planned ? std::span<const CellKey>{} : std::span<const CellKey>{key_}, permutation_, threads);
   std::swap(key_, next_key_);
   if (!sorted) {
     // least_ is the identity between steps, so it stays.
     (gather(threads, columns), ...);
-    // The keys as the sort left them when it could, else gathered; then the id, whose gather from the
-    // identity is the permutation itself. A gather's scratch is the size of the columns' (8 bytes a circle),
-    // which the buffers keep from the columns' gather (impl/buffers.hpp) for a request of that size next.
-    if (sorted_keys.size() == n)
-      key_.swap(sorted_keys);
-    else
-      gather(threads, Columns<CellKey>{next_key_, {&key_}});
+    // The id, whose gather from the identity is the permutation itself. A gather's scratch is the size of the
+    // columns' (8 bytes a circle), which the buffers keep from the columns' gather (impl/buffers.hpp) for a
+    // request of that size next.
     if (first) {
       id_.swap(permutation_);
     } else {

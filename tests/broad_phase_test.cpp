@@ -189,10 +189,25 @@ constexpr CellKey kFarthest = G::pack(0, G::kCells - 1, G::kCells - 1);
 // CellOrder::sort guided by `previous`: the keys must not pack, or the digits would sort them.
 bool guided_sort(const std::vector<CellKey>& keys, std::span<const CellKey> previous, Buffer<std::uint32_t>& order,
                  unsigned threads = 1) {
-  Buffer<CellKey> sorted;
-  const bool already = CellOrder().sort(keys, previous, order, threads, &sorted);
-  EXPECT_TRUE(sorted.empty()) << "the keys packed: the sort went by digits, not guided";
-  return already;
+  EXPECT_FALSE(CellOrder::by_digits(keys)) << "the keys pack: the sort would go by digits, not guided";
+  return CellOrder().sort(keys, previous, order, threads);
+}
+
+// CellOrder::sort_in_place on a copy of `keys`, which must come out as keys[order[t]] at t; `order` must be the
+// plain sort's. Returns whether the sort went by digits.
+bool sort_keys_in_place(const std::vector<CellKey>& keys, std::span<const CellKey> previous, unsigned threads,
+                        const std::string& name) {
+  Buffer<CellKey> sorted(keys.begin(), keys.end());
+  Buffer<std::uint32_t> order;
+  CellOrder().sort_in_place(sorted, previous, order, threads);
+  EXPECT_EQ(order, plainly_sorted(keys)) << name;
+  EXPECT_EQ(sorted.size(), keys.size()) << name;
+  for (std::size_t t = 0; t < sorted.size() && t < order.size(); ++t)
+    if (sorted[t] != keys[order[t]]) {
+      ADD_FAILURE() << name << ": key at " << t << " is " << sorted[t] << ", not " << keys[order[t]];
+      break;
+    }
+  return CellOrder::by_digits(keys);
 }
 
 TEST(broad_phase, the_guided_re_sort_equals_a_plain_sort_after_moves_within_and_across_bands) {
@@ -233,21 +248,10 @@ TEST(broad_phase, the_sort_of_many_unguided_keys_equals_a_plain_sort_whichever_b
       {"bits 0 to 15 and 40 to 55: 32 bits in two runs", {CellKey{0xffff}, CellKey{0xffff} << 40}},
       {"bits 0 to 32: 33 bits, too many to pack", {(CellKey{1} << 33) - 1}},
   };
-  // The sort also gives the keys in their new order when its packed entries hold them (at most 32 bits of
-  // fields that differ): each must be keys[order[t]], unpacked from its entry.
+  // The sort in place leaves the keys in their new order: unpacked from its entries where they pack (at most
+  // 32 bits of fields that differ), else gathered; each must be keys[order[t]].
   const auto sort_with_keys = [](const std::vector<CellKey>& keys, const std::string& name, bool guided = false) {
-    Buffer<std::uint32_t> order;
-    Buffer<CellKey> sorted{CellKey{7}};  // emptied by the sort unless it writes the keys
-    CellOrder().sort(keys, guided ? std::span<const CellKey>(keys) : std::span<const CellKey>(), order, 1, &sorted);
-    EXPECT_EQ(order, plainly_sorted(keys)) << name;
-    if (sorted.empty()) return false;
-    EXPECT_EQ(sorted.size(), keys.size()) << name;
-    for (std::size_t t = 0; t < sorted.size() && t < order.size(); ++t)
-      if (sorted[t] != keys[order[t]]) {
-        ADD_FAILURE() << name << ": key at " << t << " is " << sorted[t] << ", not " << keys[order[t]];
-        break;
-      }
-    return true;
+    return sort_keys_in_place(keys, guided ? std::span<const CellKey>(keys) : std::span<const CellKey>(), 1, name);
   };
   for (const auto& [name, bits] : masks) {
     std::vector<CellKey> keys(n);
@@ -287,7 +291,7 @@ TEST(broad_phase, the_sort_of_many_unguided_keys_equals_a_plain_sort_whichever_b
   CellOrder().sort(keys, {}, order);
   EXPECT_EQ(order, plainly_sorted(keys)) << "a planned scene on one level";
   EXPECT_TRUE(sort_with_keys(keys, "a planned scene on one level"));
-  // Too few keys for the digits (std::sort), or keys guided by their previous order: no keys given.
+  // Too few keys for the digits (std::sort).
   EXPECT_FALSE(sort_with_keys(std::vector<CellKey>(keys.begin(), keys.begin() + 1000), "1,000 keys"));
   // Keys that pack are sorted by digits whether or not their previous keys are given.
   EXPECT_TRUE(sort_with_keys(keys, "a planned scene on one level, guided", true));
@@ -303,17 +307,11 @@ TEST(broad_phase, the_sort_by_digits_in_parts_on_several_threads_equals_a_plain_
   for (CellKey& k : keys)
     k = G::pack(0, static_cast<std::uint32_t>(random() % 3000), static_cast<std::uint32_t>(random() % 3000 / 7));
   for (const unsigned threads : {1u, 2u, 3u}) {
-    Buffer<std::uint32_t> order;
-    Buffer<CellKey> sorted;
-    EXPECT_FALSE(CellOrder().sort(keys, keys, order, threads, &sorted));
     EXPECT_GT(chunk_count(n, threads), threads > 1 ? 1u : 0u);
+    EXPECT_TRUE(sort_keys_in_place(keys, keys, threads, std::to_string(threads) + " threads"));
+    Buffer<std::uint32_t> order;
+    EXPECT_FALSE(CellOrder().sort(keys, keys, order, threads));
     EXPECT_EQ(order, plainly_sorted(keys)) << threads << " threads";
-    ASSERT_EQ(sorted.size(), n) << threads << " threads: the digits give the keys";
-    for (std::size_t t = 0; t < n; ++t)
-      if (sorted[t] != keys[order[t]]) {
-        ADD_FAILURE() << threads << " threads: key at " << t;
-        break;
-      }
   }
 }
 
@@ -372,9 +370,10 @@ TEST(broad_phase, the_re_sort_in_parts_on_several_threads_equals_a_plain_sort) {
     moved[n - 1] = kFarthest;
     Buffer<std::uint32_t> parted;
     CellOrder order;
-    Buffer<CellKey> sorted;
-    EXPECT_FALSE(order.sort(moved, previous, parted, threads, &sorted));
-    EXPECT_TRUE(sorted.empty()) << "the keys packed: the sort went by digits, not guided";
+    EXPECT_FALSE(CellOrder::by_digits(moved)) << "the keys pack: the sort would go by digits, not guided";
+    EXPECT_FALSE(order.sort(moved, previous, parted, threads));
+    // The guided sort in place gathers the keys into the new order.
+    EXPECT_FALSE(sort_keys_in_place(moved, previous, threads, std::to_string(threads) + " threads, in place"));
     EXPECT_EQ(parted, plainly_sorted(moved)) << threads << " threads";
     if (threads > 1) {
       EXPECT_GT(chunks, 1u);
