@@ -263,13 +263,15 @@ void repair(Buffer<Entry>& list, Buffer<Entry>& scratch) {
   }
 }
 
-// The sort by digits, guided by nothing: the slots by (key, slot) through 8-byte entries, the packed key
-// (KeyPacking) in the upper half and the slot in the lower, half the bytes of an Entry, sorted by the packed
-// bits as sort_slot_ordered sorts Entries, each pass in parts on up to `threads` threads; the input is in slot
-// order, so ties stay in slot order. The entries are made in `entries`, which may be the very buffer `keys`
-// views (each entry is made from its own slot's key), and the sorted ones then give `order` and, unpacked in
-// place, leave `entries` holding keys[order[t]] at t. Returns false, with nothing written, when the packed keys
-// take more than 32 bits or the keys are fewer than kRadixFrom (the guided path sorts those).
+// f(t) for every slot t of n, in chunks on up to `threads` threads.
+template <class F>
+void for_each_slot(std::size_t n, unsigned threads, F&& f) {
+  const std::size_t chunks = chunk_count(n, threads);
+  for_each_chunk(chunks, threads, [&](std::size_t c) {
+    for (std::size_t t = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1); t < e; ++t) f(t);
+  });
+}
+
 // The packing of the sort by digits, if it applies: kRadixFrom keys or more whose fields pack into 32 bits.
 std::optional<KeyPacking> digits_for(std::span<const CellKey> keys) {
   if (keys.size() < kRadixFrom) return std::nullopt;
@@ -278,31 +280,30 @@ std::optional<KeyPacking> digits_for(std::span<const CellKey> keys) {
   return packing;
 }
 
-bool sort_packed(std::span<const CellKey> keys, Buffer<CellKey>& entries, Buffer<std::uint32_t>& order,
-                 unsigned threads) {
+// The sort by digits, guided by nothing, of `keys` in place: the slots by (key, slot) through 8-byte entries,
+// the packed key (KeyPacking) in the upper half and the slot in the lower, half the bytes of an Entry, sorted
+// by the packed bits as sort_slot_ordered sorts Entries, each pass in parts on up to `threads` threads; the
+// input is in slot order, so ties stay in slot order. Each entry is made where its slot's key was, and the
+// sorted ones then give `order` and, unpacked in place, leave `keys` holding the old keys[order[t]] at t.
+// Returns false, with nothing written, when digits_for does not apply (the guided path sorts those keys).
+bool sort_packed(Buffer<CellKey>& keys, Buffer<std::uint32_t>& order, unsigned threads) {
   static_assert(std::is_same_v<CellKey, std::uint64_t>, "an entry becomes its key in place");
   const std::size_t n = keys.size();
   const std::optional<KeyPacking> digits = digits_for(keys);
   if (!digits) return false;
   const KeyPacking& packing = *digits;
-  const std::size_t chunks = chunk_count(n, threads);
-  const auto each = [&](auto&& f) {
-    for_each_chunk(chunks, threads, [&](std::size_t c) {
-      for (std::size_t t = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1); t < e; ++t) f(t);
-    });
-  };
-  entries.resize(n);  // a buffer that `keys` views has n already: nothing moves
-  each([&](std::size_t s) { entries[s] = packing(keys[s]) << 32 | s; });
+  for_each_slot(n, threads, [&](std::size_t s) { keys[s] = packing(keys[s]) << 32 | s; });
   Buffer<std::uint64_t> other(n);
-  Buffer<std::uint64_t>*from = &entries, *to = &other;
+  Buffer<std::uint64_t>*from = &keys, *to = &other;
+  const std::size_t chunks = chunk_count(n, threads);
   for (int shift = 32; shift < 32 + packing.bits(); shift += kRadixBits) {
     radix_pass<std::uint64_t>(*from, *to, [shift](std::uint64_t e) { return (e >> shift) & kDigit; }, chunks, threads);
     std::swap(from, to);
   }
-  if (from != &entries) entries.swap(other);
-  each([&](std::size_t t) {
-    order[t] = static_cast<std::uint32_t>(entries[t]);
-    entries[t] = packing.unpack(entries[t] >> 32);
+  if (from != &keys) keys.swap(other);
+  for_each_slot(n, threads, [&](std::size_t t) {
+    order[t] = static_cast<std::uint32_t>(keys[t]);
+    keys[t] = packing.unpack(keys[t] >> 32);
   });
   return true;
 }
@@ -392,36 +393,21 @@ void CellOrder::Chunk::merge_into(std::span<std::uint32_t> out) {
 
 bool CellOrder::by_digits(std::span<const CellKey> keys) { return digits_for(keys).has_value(); }
 
-bool CellOrder::identity_if_sorted(std::span<const CellKey> keys, Buffer<std::uint32_t>& order) {
-  const std::size_t n = keys.size();
-  if (n > std::numeric_limits<std::uint32_t>::max())
-    throw std::invalid_argument("CellOrder::sort: more than 2^32 - 1 slots");
-  order.resize(n);
-  // Already sorted (a quiet world, or one whose circles all kept their cells): the identity.
-  if (!std::is_sorted(keys.begin(), keys.end())) return false;
-  for (std::size_t s = 0; s < n; ++s) order[s] = static_cast<std::uint32_t>(s);
-  return true;
-}
-
-bool CellOrder::sort(std::span<const CellKey> keys, std::span<const CellKey> previous,
-                     Buffer<std::uint32_t>& order, unsigned threads) {
-  if (identity_if_sorted(keys, order)) return true;
-  Buffer<CellKey> entries;
-  if (!sort_packed(keys, entries, order, threads)) guided(keys, previous, order, threads);
-  return false;
-}
-
 bool CellOrder::sort_in_place(Buffer<CellKey>& keys, std::span<const CellKey> previous,
                               Buffer<std::uint32_t>& order, unsigned threads) {
-  if (identity_if_sorted(keys, order)) return true;
-  if (sort_packed(keys, keys, order, threads)) return false;
+  const std::size_t n = keys.size();
+  if (n > std::numeric_limits<std::uint32_t>::max())
+    throw std::invalid_argument("CellOrder::sort_in_place: more than 2^32 - 1 slots");
+  order.resize(n);
+  // Already sorted (a quiet world, or one whose circles all kept their cells): the identity.
+  if (std::is_sorted(keys.begin(), keys.end())) {
+    for (std::size_t s = 0; s < n; ++s) order[s] = static_cast<std::uint32_t>(s);
+    return true;
+  }
+  if (sort_packed(keys, order, threads)) return false;
   guided(keys, previous, order, threads);
-  Buffer<CellKey> sorted(keys.size());
-  const std::size_t n = keys.size(), chunks = chunk_count(n, threads);
-  for_each_chunk(chunks, threads, [&](std::size_t c) {
-    for (std::size_t t = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1); t < e; ++t)
-      sorted[t] = keys[order[t]];
-  });
+  Buffer<CellKey> sorted(n);
+  for_each_slot(n, threads, [&](std::size_t t) { sorted[t] = keys[order[t]]; });
   keys.swap(sorted);
   return false;
 }

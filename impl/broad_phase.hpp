@@ -178,16 +178,13 @@ class CellGrid {
 // the same for every thread count.
 class CellOrder {
  public:
-  // Sets `order` to the slots of `keys` in ascending key order (ties in slot order): keys[order[0]] ≤
-  // keys[order[1]] ≤ …. `previous` holds the keys the same slots had when they were last sorted (ascending
-  // by slot), or is empty; it only guides the work of keys that do not pack, never the result. Returns true
-  // when `keys` were sorted already (`order` is then the identity).
-  bool sort(std::span<const CellKey> keys, std::span<const CellKey> previous, Buffer<std::uint32_t>& order,
-            unsigned threads = 1);
-  // The same, and `keys` left in the new order, keys[order[t]] at t. The sort by digits makes its entries in
-  // the keys' own memory and leaves them there as keys, so that it writes 8 bytes a slot less of new memory
-  // than a sort beside them (8 MB at 10^6 circles, in a first step that writes its memory for the first
-  // time); the guided sort's result is gathered.
+  // Sets `order` to the slots of `keys` in ascending key order (ties in slot order), keys[order[0]] ≤
+  // keys[order[1]] ≤ …, and leaves `keys` in that order, the old keys[order[t]] at t. `previous` holds the keys
+  // the same slots had when they were last sorted (ascending by slot), or is empty; it only guides the work of
+  // keys that do not pack, never the result. Returns true when `keys` were sorted already (`order` is then the
+  // identity). The sort by digits makes its entries in the keys' own memory and leaves them there as keys, so
+  // that it writes 8 bytes a slot less of new memory than a sort beside them (8 MB at 10^6 circles, in a first
+  // step that writes its memory for the first time); the guided sort's result is gathered.
   bool sort_in_place(Buffer<CellKey>& keys, std::span<const CellKey> previous, Buffer<std::uint32_t>& order,
                      unsigned threads = 1);
   // True when the sorts go by digits for these keys, unsorted: kRadixFrom (1,024) keys or more whose fields
@@ -195,8 +192,6 @@ class CellOrder {
   static bool by_digits(std::span<const CellKey> keys);
 
  private:
-  // `order` sized to the keys, and set to the identity when they are sorted already (then true).
-  static bool identity_if_sorted(std::span<const CellKey> keys, Buffer<std::uint32_t>& order);
   // The sort guided by `previous` (below), for keys that do not pack.
   void guided(std::span<const CellKey> keys, std::span<const CellKey> previous, Buffer<std::uint32_t>& order,
               unsigned threads);

@@ -46,8 +46,9 @@ Sorted sorted(const std::vector<std::array<double, 3>>& circles) {
   s.grid.plan(px, py, r);
   std::vector<CellKey> keys(px.size());
   s.grid.keys(px, py, r, keys);
+  Buffer<CellKey> in_order(keys.begin(), keys.end());
   Buffer<std::uint32_t> order;
-  CellOrder().sort(keys, {}, order);
+  CellOrder().sort_in_place(in_order, {}, order);
   for (const std::uint32_t t : order) {
     s.key.push_back(keys[t]);
     s.px.push_back(px[t]);
@@ -174,7 +175,7 @@ TEST(broad_phase, keys_order_cells_by_level_band_column_then_row_within_the_band
     }
 }
 
-// The slots of `keys` in (key, slot) order, by a plain stable sort: what CellOrder::sort must return.
+// The slots of `keys` in (key, slot) order, by a plain stable sort: what CellOrder::sort_in_place must return.
 Buffer<std::uint32_t> plainly_sorted(const std::vector<CellKey>& keys) {
   Buffer<std::uint32_t> order(keys.size());
   std::iota(order.begin(), order.end(), 0u);
@@ -186,11 +187,12 @@ Buffer<std::uint32_t> plainly_sorted(const std::vector<CellKey>& keys) {
 // pack into the digits' entries, so the sort is the guided one.
 constexpr CellKey kFarthest = G::pack(0, G::kCells - 1, G::kCells - 1);
 
-// CellOrder::sort guided by `previous`: the keys must not pack, or the digits would sort them.
+// CellOrder::sort_in_place guided by `previous`: the keys must not pack, or the digits would sort them.
 bool guided_sort(const std::vector<CellKey>& keys, std::span<const CellKey> previous, Buffer<std::uint32_t>& order,
                  unsigned threads = 1) {
   EXPECT_FALSE(CellOrder::by_digits(keys)) << "the keys pack: the sort would go by digits, not guided";
-  return CellOrder().sort(keys, previous, order, threads);
+  Buffer<CellKey> copy(keys.begin(), keys.end());
+  return CellOrder().sort_in_place(copy, previous, order, threads);
 }
 
 // CellOrder::sort_in_place on a copy of `keys`, which must come out as keys[order[t]] at t; `order` must be the
@@ -199,7 +201,8 @@ bool sort_keys_in_place(const std::vector<CellKey>& keys, std::span<const CellKe
                         const std::string& name) {
   Buffer<CellKey> sorted(keys.begin(), keys.end());
   Buffer<std::uint32_t> order;
-  CellOrder().sort_in_place(sorted, previous, order, threads);
+  EXPECT_EQ(CellOrder().sort_in_place(sorted, previous, order, threads), std::is_sorted(keys.begin(), keys.end()))
+      << name;
   EXPECT_EQ(order, plainly_sorted(keys)) << name;
   EXPECT_EQ(sorted.size(), keys.size()) << name;
   for (std::size_t t = 0; t < sorted.size() && t < order.size(); ++t)
@@ -257,9 +260,6 @@ TEST(broad_phase, the_sort_of_many_unguided_keys_equals_a_plain_sort_whichever_b
     std::vector<CellKey> keys(n);
     for (CellKey& k : keys)
       for (const CellKey b : bits) k |= b & random();
-    Buffer<std::uint32_t> order;
-    CellOrder().sort(keys, {}, order);
-    EXPECT_EQ(order, plainly_sorted(keys)) << name;
     // Packed, each field takes the bits of its range: the fields of bits 0 to 15 and 40 to 55 take 42.
     const bool packs = std::string(name) != "bits 0 to 15 and 40 to 55: 32 bits in two runs" &&
                        std::string(name) != "bits 0 to 32: 33 bits, too many to pack";
@@ -270,9 +270,6 @@ TEST(broad_phase, the_sort_of_many_unguided_keys_equals_a_plain_sort_whichever_b
     k = random() % 50 == 0 ? G::pack(G::kGlobalLevel, 0, 0)
                            : G::pack(static_cast<unsigned>(random() % 3) * 7, static_cast<std::uint32_t>(random() % 300),
                                      static_cast<std::uint32_t>(random() % 40) + (std::uint32_t{1} << 20));
-  Buffer<std::uint32_t> order;
-  CellOrder().sort(keys, {}, order);
-  EXPECT_EQ(order, plainly_sorted(keys)) << "the layout";
   EXPECT_FALSE(sort_with_keys(keys, "the layout")) << "the columns of the global circles and the rest take 21 bits";
   // A planned scene: cells around kCells / 2 on both axes (CellGrid::plan centres it there), so columns and
   // bands straddle a power of two and differ in every bit below it, on two levels.
@@ -282,14 +279,10 @@ TEST(broad_phase, the_sort_of_many_unguided_keys_equals_a_plain_sort_whichever_b
     k = G::pack(level, (centre >> (2 * level)) - 600 + static_cast<std::uint32_t>(random() % 1200),
                 (centre >> (2 * level)) - 600 + static_cast<std::uint32_t>(random() % 1200));
   }
-  CellOrder().sort(keys, {}, order);
-  EXPECT_EQ(order, plainly_sorted(keys)) << "a planned scene";
   EXPECT_FALSE(sort_with_keys(keys, "a planned scene")) << "level 1's columns are a quarter of level 0's";
   for (CellKey& k : keys)  // the same on level 0 alone: bands, rows and columns in 8 + 3 + 11 bits
     k = G::pack(0, centre - 600 + static_cast<std::uint32_t>(random() % 1200),
                 centre - 600 + static_cast<std::uint32_t>(random() % 1200));
-  CellOrder().sort(keys, {}, order);
-  EXPECT_EQ(order, plainly_sorted(keys)) << "a planned scene on one level";
   EXPECT_TRUE(sort_with_keys(keys, "a planned scene on one level"));
   // Too few keys for the digits (std::sort).
   EXPECT_FALSE(sort_with_keys(std::vector<CellKey>(keys.begin(), keys.begin() + 1000), "1,000 keys"));
@@ -309,9 +302,6 @@ TEST(broad_phase, the_sort_by_digits_in_parts_on_several_threads_equals_a_plain_
   for (const unsigned threads : {1u, 2u, 3u}) {
     EXPECT_GT(chunk_count(n, threads), threads > 1 ? 1u : 0u);
     EXPECT_TRUE(sort_keys_in_place(keys, keys, threads, std::to_string(threads) + " threads"));
-    Buffer<std::uint32_t> order;
-    EXPECT_FALSE(CellOrder().sort(keys, keys, order, threads));
-    EXPECT_EQ(order, plainly_sorted(keys)) << threads << " threads";
   }
 }
 
@@ -371,19 +361,18 @@ TEST(broad_phase, the_re_sort_in_parts_on_several_threads_equals_a_plain_sort) {
     Buffer<std::uint32_t> parted;
     CellOrder order;
     EXPECT_FALSE(CellOrder::by_digits(moved)) << "the keys pack: the sort would go by digits, not guided";
-    EXPECT_FALSE(order.sort(moved, previous, parted, threads));
-    // The guided sort in place gathers the keys into the new order.
-    EXPECT_FALSE(sort_keys_in_place(moved, previous, threads, std::to_string(threads) + " threads, in place"));
+    Buffer<CellKey> in_order(moved.begin(), moved.end());
+    EXPECT_FALSE(order.sort_in_place(in_order, previous, parted, threads));
     EXPECT_EQ(parted, plainly_sorted(moved)) << threads << " threads";
+    // The guided sort gathers the keys into the new order.
+    for (std::size_t t = 0; t < n; ++t) ASSERT_EQ(in_order[t], moved[parted[t]]) << threads << " threads, slot " << t;
     if (threads > 1) {
       EXPECT_GT(chunks, 1u);
       EXPECT_GT(crossed, n / 50) << threads << " threads: too few keys change part to test the hand-over";
     }
     // The same CellOrder again, on the result's own order: nothing left over from the last call.
-    std::vector<CellKey> again(n);
-    for (std::size_t t = 0; t < n; ++t) again[t] = moved[parted[t]];
     Buffer<std::uint32_t> identity;
-    EXPECT_TRUE(order.sort(again, moved, identity, threads));
+    EXPECT_TRUE(order.sort_in_place(in_order, moved, identity, threads));
   }
 }
 
