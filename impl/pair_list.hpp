@@ -125,17 +125,31 @@ inline constexpr std::uint32_t kNever = ~std::uint32_t{0};
 inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 // The first step of a horizon of `horizon` steps, each moving a circle at most `step`, at which two circles of
-// radii ar and br whose centres are dx = RN(bx − ax), dy = RN(by − ay) apart, with d2 = RN(RN(dx²) + RN(dy²)),
-// may intersect: 0 … horizon, or kNever.
+// radii ar and br whose centres are `root` ≥ their distance apart (from below: root ≤ D·(1 + 2^-50) + 2^-536,
+// above) may intersect: 0 … horizon, or kNever. Without a branch on the pair, so that a loop over a batch of
+// pairs (listing_steps) runs without mispredictions: each case is a select, and ⌈q⌉ is taken of 0 where q is
+// not asked for.
+[[gnu::always_inline]] inline std::uint32_t first_step_of_root(double root, double ar, double br, double step,
+                                                               std::uint64_t horizon) noexcept {
+  const double gap = root * (1 - kGapRelative) - (ar + br) * (1 + kGapRelative) - kGapAbsolute;
+  const double q = gap / (2 * step) * kQuotientShrink;
+  // A gap that is not finite (only within reach of the double range) or ≤ 0: test from the first step. A
+  // quotient past the horizon (also +∞ or NaN for step = 0): never. Otherwise 0 < q ≤ horizon, and ⌈q⌉ is
+  // its truncation t, plus one where t < q: a conversion and a compare, which vectorize where std::ceil does
+  // not (GCC keeps it scalar for its inexact flag).
+  const bool now = !(gap > 0) | !(gap < kInfinity);
+  const bool within = q <= static_cast<double>(horizon);
+  const double asked = within ? q : 0.0;
+  const auto truncated = static_cast<std::uint32_t>(asked);
+  const std::uint32_t ceiling = truncated + (static_cast<double>(truncated) < asked);
+  return now ? 0 : within ? ceiling : kNever;
+}
+
+// The same for centres dx = RN(bx − ax), dy = RN(by − ay) apart, with d2 = RN(RN(dx²) + RN(dy²)).
 [[gnu::always_inline]] inline std::uint32_t first_step_from(double dx, double dy, double d2, double ar, double br, double step,
                                      std::uint64_t horizon) noexcept {
   const double root = d2 < kInfinity ? std::sqrt(d2) : norm_upper(dx, dy);
-  const double gap = root * (1 - kGapRelative) - (ar + br) * (1 + kGapRelative) - kGapAbsolute;
-  if (!std::isfinite(gap)) return 0;
-  if (gap <= 0) return 0;
-  const double q = gap / (2 * step) * kQuotientShrink;
-  if (!(q <= static_cast<double>(horizon))) return kNever;  // also +∞ for step = 0
-  return static_cast<std::uint32_t>(std::ceil(q));
+  return first_step_of_root(root, ar, br, step, horizon);
 }
 
 // The same for the circles (ax, ay, ar) and (bx, by, br).
@@ -181,6 +195,29 @@ struct Lister {
   }
   [[gnu::always_inline]] std::uint32_t operator()(std::size_t a, std::size_t b) const noexcept {
     return listing_step(px[a], py[a], r[a], ri[a], px[b], py[b], r[b], ri[b], step, horizon);
+  }
+  // (a, b) for a batch of pairs, pairs[k] = a·2^32 + b: steps[k] = (*this)(a, b). One loop with no branch on
+  // a pair (listing_step's cases are selects), so that the list build's loop over the candidates the walk
+  // kept neither mispredicts on whether a pair touches now nor waits on a division it would not use. The root
+  // is RN(√d2) for every pair; the pairs whose d2 overflows (within reach of the double range only) are
+  // answered again by listing_step, whose root there is norm_upper.
+  void steps(std::span<const std::uint64_t> pairs, std::uint32_t* out) const noexcept {
+    const double *x = px, *y = py, *padded = r, *wide = ri;
+    const double at = step;
+    const std::uint64_t h = horizon;
+    bool overflow = false;
+    for (std::size_t k = 0; k < pairs.size(); ++k) {
+      const std::size_t a = pairs[k] >> 32, b = pairs[k] & 0xffff'ffffu;
+      const double dx = x[b] - x[a], dy = y[b] - y[a];
+      const double d2 = dx * dx + dy * dy;
+      const bool disjoint = certainly_disjoint_of_squares(d2, wide[a] + wide[b], filter::kAbsolute);
+      const bool touching = certainly_intersecting_of_squares(d2, padded[a] + padded[b], filter::kAbsolute);
+      const std::uint32_t later = first_step_of_root(std::sqrt(d2), padded[a], padded[b], at, h);
+      out[k] = disjoint ? kNever : touching ? 0 : later;
+      overflow |= !(d2 < kInfinity);
+    }
+    if (overflow) [[unlikely]]
+      for (std::size_t k = 0; k < pairs.size(); ++k) out[k] = (*this)(pairs[k] >> 32, pairs[k] & 0xffff'ffffu);
   }
 };
 

@@ -26,21 +26,20 @@ inline std::size_t PairList::chunk_of(std::size_t slot) const noexcept {
 
 // The broad phase's walk over the slots [begin, end) of `view`, in ascending order: for each slot a, the
 // candidates b that visit_neighbourhood_runs offers (impl/broad_phase.hpp) and lister.near(a, b) keeps, handed
-// to pair(a, b) in the order found. The candidates of a near enough to ask are gathered without a branch from
-// all of a's runs, then handed over together: one loop over them per a, not one per run (its exit mispredicts
-// about once per loop).
-template <class Pair>
+// to batch(pairs) in the order found, kWalkBatch pairs at a time (the last batch fewer), each pair as
+// a·2^32 + b. The candidates near enough to ask are gathered without a branch from all of a's runs, and the
+// batches span many slots: the caller's loop over a batch runs long, without a loop exit per slot or per run
+// to mispredict.
+inline constexpr std::size_t kWalkBatch = 256;
+
+template <class Batch>
 void walk_near(const CellGrid& grid, const CellView& view, std::size_t begin, std::size_t end, const Lister& lister,
-               Pair&& pair) {
+               Batch&& batch) {
   const std::size_t n = view.key.size();
   NeighbourCursor cursor;
-  constexpr std::size_t kKept = 64;
-  std::uint32_t kept[kKept];
+  std::uint64_t kept[kWalkBatch];
+  std::size_t kept_so_far = 0;
   for (std::size_t a = begin; a < end; ++a) {
-    const auto hand_over = [&](std::size_t held) {
-      for (std::size_t k = 0; k < held; ++k) pair(a, std::size_t{kept[k]});
-    };
-    std::size_t kept_so_far = 0;
     visit_neighbourhood_runs(grid, view, a, cursor, [&](std::size_t from, CellKey last) {
       // A copy of the lister per run, in registers: the callers' marks are char stores, which may alias
       // anything, so values in memory would be read again for every candidate.
@@ -51,21 +50,22 @@ void walk_near(const CellGrid& grid, const CellView& view, std::size_t begin, st
       // candidate.
       const double ax = near.px[a], ay = near.py[a], ari = near.ri[a];
       const std::size_t slots = n;
-      std::uint32_t* const into = kept;
+      std::uint64_t* const into = kept;
+      const std::uint64_t pair_of_a = std::uint64_t{a} << 32;
       std::size_t held = kept_so_far, b = from;
       for (; b < slots && key[b] <= last; ++b) {
-        into[held] = static_cast<std::uint32_t>(b);
+        into[held] = pair_of_a + b;
         held += near.near_to(ax, ay, ari, b);
-        if (held == kKept) [[unlikely]] {
-          hand_over(held);
+        if (held == kWalkBatch) [[unlikely]] {
+          batch(std::span<const std::uint64_t>(into, held));
           held = 0;
         }
       }
       kept_so_far = held;
       return b;  // the run ended: a larger key, or the view's end
     });
-    hand_over(kept_so_far);
   }
+  batch(std::span<const std::uint64_t>(kept, kept_so_far));
 }
 
 // Global slots (a box too wide for every level) of `view` against every slot, each pair once: pair(g, b).
@@ -130,18 +130,22 @@ inline void PairList::build(const CellGrid& grid, const CellView& view, unsigned
     // would otherwise make the compiler read them from the vector after every pair.
     ListedPair* out = found.data();
     std::size_t capacity = found.size();
-    walk_near(grid, view, begin, end, first, [&](std::size_t a, std::size_t b) {
-      const std::uint32_t step = first_of(a, b);
-      if (step > horizon) return;
-      if (size == capacity) [[unlikely]] {
-        found.resize(size + size / 2);
-        out = found.data();
-        capacity = found.size();
+    walk_near(grid, view, begin, end, first, [&](std::span<const std::uint64_t> batch) {
+      std::uint32_t steps[kWalkBatch];
+      first_of.steps(batch, steps);
+      for (std::size_t k = 0; k < batch.size(); ++k) {
+        const std::uint32_t step = steps[k];
+        if (step > horizon) continue;
+        if (size == capacity) [[unlikely]] {
+          found.resize(size + size / 2);
+          out = found.data();
+          capacity = found.size();
+        }
+        const ListedPair p{static_cast<std::uint32_t>(batch[k] >> 32), static_cast<std::uint32_t>(batch[k]), step};
+        out[size++] = p;
+        ++count[(p.a - begin) / kBlockSlots * kBuckets + std::min(step, kBuckets - 1)];
+        take(mine, p);
       }
-      const ListedPair p{static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b), step};
-      out[size++] = p;
-      ++count[(a - begin) / kBlockSlots * kBuckets + std::min(step, kBuckets - 1)];
-      take(mine, p);
     });
     chunk.size = size;
     tally[c] = mine;
@@ -323,10 +327,15 @@ std::size_t PairList::contacts_now(const CellGrid& grid, const CellView& view, u
     auto contacts = chunk_contacts(c, least, touched, intersect, precedes);
     const Lister first_of = first;
     walk_near(grid, view, chunk_begin(n, chunks, c), chunk_begin(n, chunks, c + 1), first,
-              [&](std::size_t a, std::size_t b) {
-                if (first_of(a, b) != 0) return;
-                mark(a, b);
-                contacts.test(a, b);
+              [&](std::span<const std::uint64_t> batch) {
+                std::uint32_t steps[kWalkBatch];
+                first_of.steps(batch, steps);
+                for (std::size_t k = 0; k < batch.size(); ++k) {
+                  if (steps[k] != 0) continue;
+                  const std::size_t a = batch[k] >> 32, b = batch[k] & 0xffff'ffffu;
+                  mark(a, b);
+                  contacts.test(a, b);
+                }
               });
     counts[c] = {contacts.seen, contacts.hits};
   });

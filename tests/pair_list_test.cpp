@@ -139,6 +139,48 @@ TEST(pair_list, first_step_is_never_later_than_the_first_step_a_pair_can_meet_an
   EXPECT_GT(near_integer, 10000);
 }
 
+TEST(pair_list, the_batch_listing_gives_every_pair_the_first_step_of_the_pair_listing_overflowing_distances_too) {
+  // Lister::steps, which the list build runs over the candidates the walk keeps, against Lister's one-pair
+  // answer (listing_step), on circles from touching to far apart: clusters around 0, around ±2^1000 (where
+  // a distance's square overflows, and only norm_upper knows the pair is out of reach) and one subnormal
+  // apart; every answer kind must come up, and the batch's must be the pair's, bit for bit.
+  std::mt19937_64 g(7);
+  std::uniform_real_distribution<double> unit(0, 1);
+  std::vector<double> px, py, r, ri;
+  for (int i = 0; i < 96; ++i) {
+    const double centre = i % 3 == 0 ? 0.0 : (i % 3 == 1 ? 0x1p1000 : -0x1p1000);
+    const double spread = i % 4 == 0 ? 0x1p-1070 : 40 * unit(g);
+    px.push_back(centre + spread * (unit(g) - 0.5));
+    py.push_back(centre * unit(g) + spread * (unit(g) - 0.5));
+    r.push_back(i % 4 == 0 ? 0.0 : 1 + unit(g));
+    ri.push_back(r.back() + 2);
+  }
+  const std::uint64_t horizon = 6;
+  const Lister lister{px.data(), py.data(), r.data(), ri.data(), 0.25, horizon};
+  std::vector<std::uint64_t> pairs;
+  for (std::uint64_t a = 0; a < px.size(); ++a)
+    for (std::uint64_t b = a + 1; b < px.size(); ++b) pairs.push_back(a << 32 | b);
+  std::vector<std::uint32_t> steps(pairs.size());
+  int never = 0, now = 0, later = 0, overflowing = 0;
+  for (std::size_t from = 0; from < pairs.size(); from += 100) {
+    const std::size_t count = std::min<std::size_t>(100, pairs.size() - from);
+    lister.steps(std::span<const std::uint64_t>(pairs.data() + from, count), steps.data() + from);
+  }
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    const std::size_t a = pairs[k] >> 32, b = pairs[k] & 0xffff'ffffu;
+    ASSERT_EQ(steps[k], lister(a, b)) << "pair " << a << ", " << b;
+    const double dx = px[b] - px[a], dy = py[b] - py[a];
+    overflowing += std::isfinite(dx) && std::isfinite(dy) && !std::isfinite(dx * dx + dy * dy) && steps[k] == kNever;
+    never += steps[k] == kNever;
+    now += steps[k] == 0;
+    later += steps[k] > 0 && steps[k] <= horizon;
+  }
+  EXPECT_GT(overflowing, 0);
+  EXPECT_GT(never, 0);
+  EXPECT_GT(now, 0);
+  EXPECT_GT(later, 0);
+}
+
 TEST(pair_list, a_pair_that_meets_exactly_when_the_horizon_ends_is_listed_and_its_contact_found) {
   // Two unit circles, centres ±(1 + H) apart from the origin, closing at v = 60 each (every move exact):
   // world H is the first in which they touch, exactly tangent, and the step from it exchanges their
