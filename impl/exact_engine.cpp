@@ -491,18 +491,25 @@ void ExactEngine::walk() {
   ++pending_;
   std::vector<double> largest(chunks);  // per chunk: max(|a_x|, |a_y|) after the walk
   for_each_chunk(chunks, threads_, [&](std::size_t c) {
-    double reach = 0;
     double* const x = a.x.data();
     double* const y = a.y.data();
     const double* const wx = a.wx.data();
     const double* const wy = a.wy.data();
     const std::size_t b = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1);
-    for (auto t = std::lower_bound(listed_.begin(), listed_.end(), b); t != listed_.end() && *t < e; ++t) {
-      x[*t] += wx[*t];
-      y[*t] += wy[*t];
-      reach = std::max({reach, std::fabs(x[*t]), std::fabs(y[*t])});
+    const auto first = std::lower_bound(listed_.begin(), listed_.end(), b);
+    const auto last = std::lower_bound(first, listed_.end(), e);
+    // The new values from registers, not read back through x and y (which the stores may alias), and a
+    // largest |coordinate| per axis: two chains of one max a slot, where one chain of two made the loop wait.
+    double reach_x = 0, reach_y = 0;
+    for (auto t = first; t != last; ++t) {
+      const std::uint32_t s = *t;
+      const double nx = x[s] + wx[s], ny = y[s] + wy[s];
+      x[s] = nx;
+      y[s] = ny;
+      reach_x = std::max(reach_x, std::fabs(nx));
+      reach_y = std::max(reach_y, std::fabs(ny));
     }
-    largest[c] = reach;
+    largest[c] = std::max(reach_x, reach_y);
   });
   error_bound_ = exact::walked(error_bound_, largest_move_, *std::max_element(largest.begin(), largest.end()));
 }
