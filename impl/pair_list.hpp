@@ -134,12 +134,12 @@ inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
   const double gap = root * (1 - kGapRelative) - (ar + br) * (1 + kGapRelative) - kGapAbsolute;
   const double q = gap / (2 * step) * kQuotientShrink;
   // A gap that is not finite (only within reach of the double range) or ≤ 0: test from the first step. A
-  // quotient past the horizon (also +∞ or NaN for step = 0): never. Otherwise 0 < q ≤ horizon, and ⌈q⌉ is
-  // its truncation t, plus one where t < q: a conversion and a compare, which vectorize where std::ceil does
-  // not (GCC keeps it scalar for its inexact flag).
+  // quotient past the horizon (also +∞ or NaN for step = 0): never. Otherwise 0 ≤ q ≤ horizon, and ⌈q⌉ is
+  // its truncation t, plus one where t < q; q itself is converted only then (a negative or huge one does not
+  // fit the integer), 0 in its place otherwise.
   const bool now = !(gap > 0) | !(gap < kInfinity);
   const bool within = q <= static_cast<double>(horizon);
-  const double asked = within ? q : 0.0;
+  const double asked = (!now & within) ? q : 0.0;
   const auto truncated = static_cast<std::uint32_t>(asked);
   const std::uint32_t ceiling = truncated + (static_cast<double>(truncated) < asked);
   return now ? 0 : within ? ceiling : kNever;
