@@ -127,8 +127,7 @@ inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // The first step of a horizon of `horizon` steps, each moving a circle at most `step`, at which two circles of
 // radii ar and br whose centres are `root` ≥ their distance apart (from below: root ≤ D·(1 + 2^-50) + 2^-536,
 // above) may intersect: 0 … horizon, or kNever. Without a branch on the pair, so that a loop over a batch of
-// pairs (listing_steps) runs without mispredictions: each case is a select, and ⌈q⌉ is taken of 0 where q is
-// not asked for.
+// pairs (Lister::steps) runs without mispredictions: each case is a select.
 [[gnu::always_inline]] inline std::uint32_t first_step_of_root(double root, double ar, double br, double step,
                                                                std::uint64_t horizon) noexcept {
   const double gap = root * (1 - kGapRelative) - (ar + br) * (1 + kGapRelative) - kGapAbsolute;
@@ -164,9 +163,7 @@ inline std::uint32_t first_step(double ax, double ay, double ar, double bx, doub
 // within the horizon), 0 when the circles certainly intersect now, first_step otherwise. The same answer as
 // those three calls, with the difference and the sum of squares computed once for all three (the filter's q
 // and first_step's d2 are the same RN(RN(dx²) + RN(dy²))), so that a pair the broad phase offers for nothing
-// costs little more than one filter.
-// Always inlined: it is the body of the broad phase's loop over a run of partners, where a's values stay in
-// registers.
+// costs little more than one filter. Lister::steps gives the same answers for a batch of pairs.
 [[gnu::always_inline]] inline std::uint32_t listing_step(double ax, double ay, double ar, double ar_wide, double bx, double by, double br,
                                   double br_wide, double step, std::uint64_t horizon) noexcept {
   const double dx = bx - ax, dy = by - ay;
@@ -176,6 +173,11 @@ inline std::uint32_t first_step(double ax, double ay, double ar, double bx, doub
   if (certainly_intersecting_of_squares(d2, ar + br, filter::kAbsolute)) return 0;
   return first_step_from(dx, dy, d2, ar, br, step, horizon);
 }
+
+// A candidate pair of slots a, b as the walk hands it over (walk_near, impl/pair_list_impl.hpp): a·2^32 + b.
+inline constexpr std::uint64_t packed_pair(std::size_t a, std::size_t b) noexcept { return std::uint64_t{a} << 32 | b; }
+inline constexpr std::size_t first_slot(std::uint64_t pair) noexcept { return pair >> 32; }
+inline constexpr std::size_t second_slot(std::uint64_t pair) noexcept { return pair & 0xffff'ffffu; }
 
 // What PairList::build lists with, for both engines: circles (px, py) with radii r (the padded ones, bounding
 // the exact gap below) and ri ≥ r (inflated by the skin), for a horizon of `horizon` steps of at most `step`.
@@ -196,8 +198,8 @@ struct Lister {
   [[gnu::always_inline]] std::uint32_t operator()(std::size_t a, std::size_t b) const noexcept {
     return listing_step(px[a], py[a], r[a], ri[a], px[b], py[b], r[b], ri[b], step, horizon);
   }
-  // (a, b) for a batch of pairs, pairs[k] = a·2^32 + b: steps[k] = (*this)(a, b). One loop with no branch on
-  // a pair (listing_step's cases are selects), so that the list build's loop over the candidates the walk
+  // (a, b) for a batch of packed pairs: out[k] = (*this)(a, b) for pairs[k] = packed_pair(a, b). One loop with
+  // no branch on a pair (listing_step's cases, as selects), so that the list build's loop over the candidates the walk
   // kept neither mispredicts on whether a pair touches now nor waits on a division it would not use. The root
   // is RN(√d2) for every pair; the pairs whose d2 overflows (within reach of the double range only) are
   // answered again by listing_step, whose root there is norm_upper.
@@ -207,7 +209,7 @@ struct Lister {
     const std::uint64_t h = horizon;
     bool overflow = false;
     for (std::size_t k = 0; k < pairs.size(); ++k) {
-      const std::size_t a = pairs[k] >> 32, b = pairs[k] & 0xffff'ffffu;
+      const std::size_t a = first_slot(pairs[k]), b = second_slot(pairs[k]);
       const double dx = x[b] - x[a], dy = y[b] - y[a];
       const double d2 = dx * dx + dy * dy;
       const bool disjoint = certainly_disjoint_of_squares(d2, wide[a] + wide[b], filter::kAbsolute);
@@ -217,7 +219,7 @@ struct Lister {
       overflow |= !(d2 < kInfinity);
     }
     if (overflow) [[unlikely]]
-      for (std::size_t k = 0; k < pairs.size(); ++k) out[k] = (*this)(pairs[k] >> 32, pairs[k] & 0xffff'ffffu);
+      for (std::size_t k = 0; k < pairs.size(); ++k) out[k] = (*this)(first_slot(pairs[k]), second_slot(pairs[k]));
   }
 };
 

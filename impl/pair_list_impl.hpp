@@ -27,7 +27,7 @@ inline std::size_t PairList::chunk_of(std::size_t slot) const noexcept {
 // The broad phase's walk over the slots [begin, end) of `view`, in ascending order: for each slot a, the
 // candidates b that visit_neighbourhood_runs offers (impl/broad_phase.hpp) and lister.near(a, b) keeps, handed
 // to batch(pairs) in the order found, kWalkBatch pairs at a time (the last batch fewer), each pair as
-// a·2^32 + b. The candidates near enough to ask are gathered without a branch from all of a's runs, and the
+// packed_pair(a, b). The candidates near enough to ask are gathered without a branch from all of a's runs, and the
 // batches span many slots: the caller's loop over a batch runs long, without a loop exit per slot or per run
 // to mispredict.
 inline constexpr std::size_t kWalkBatch = 256;
@@ -51,7 +51,7 @@ void walk_near(const CellGrid& grid, const CellView& view, std::size_t begin, st
       const double ax = near.px[a], ay = near.py[a], ari = near.ri[a];
       const std::size_t slots = n;
       std::uint64_t* const into = kept;
-      const std::uint64_t pair_of_a = std::uint64_t{a} << 32;
+      const std::uint64_t pair_of_a = packed_pair(a, 0);  // + b: packed_pair(a, b), for b < 2^32
       std::size_t held = kept_so_far, b = from;
       for (; b < slots && key[b] <= last; ++b) {
         into[held] = pair_of_a + b;
@@ -141,7 +141,8 @@ inline void PairList::build(const CellGrid& grid, const CellView& view, unsigned
           out = found.data();
           capacity = found.size();
         }
-        const ListedPair p{static_cast<std::uint32_t>(batch[k] >> 32), static_cast<std::uint32_t>(batch[k]), step};
+        const ListedPair p{static_cast<std::uint32_t>(first_slot(batch[k])),
+                           static_cast<std::uint32_t>(second_slot(batch[k])), step};
         out[size++] = p;
         ++count[(p.a - begin) / kBlockSlots * kBuckets + std::min(step, kBuckets - 1)];
         take(mine, p);
@@ -332,7 +333,7 @@ std::size_t PairList::contacts_now(const CellGrid& grid, const CellView& view, u
                 first_of.steps(batch, steps);
                 for (std::size_t k = 0; k < batch.size(); ++k) {
                   if (steps[k] != 0) continue;
-                  const std::size_t a = batch[k] >> 32, b = batch[k] & 0xffff'ffffu;
+                  const std::size_t a = first_slot(batch[k]), b = second_slot(batch[k]);
                   mark(a, b);
                   contacts.test(a, b);
                 }

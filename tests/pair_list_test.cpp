@@ -159,7 +159,7 @@ TEST(pair_list, the_batch_listing_gives_every_pair_the_first_step_of_the_pair_li
   const Lister lister{px.data(), py.data(), r.data(), ri.data(), 0.25, horizon};
   std::vector<std::uint64_t> pairs;
   for (std::uint64_t a = 0; a < px.size(); ++a)
-    for (std::uint64_t b = a + 1; b < px.size(); ++b) pairs.push_back(a << 32 | b);
+    for (std::uint64_t b = a + 1; b < px.size(); ++b) pairs.push_back(packed_pair(a, b));
   std::vector<std::uint32_t> steps(pairs.size());
   int never = 0, now = 0, later = 0, overflowing = 0;
   for (std::size_t from = 0; from < pairs.size(); from += 100) {
@@ -167,7 +167,7 @@ TEST(pair_list, the_batch_listing_gives_every_pair_the_first_step_of_the_pair_li
     lister.steps(std::span<const std::uint64_t>(pairs.data() + from, count), steps.data() + from);
   }
   for (std::size_t k = 0; k < pairs.size(); ++k) {
-    const std::size_t a = pairs[k] >> 32, b = pairs[k] & 0xffff'ffffu;
+    const std::size_t a = first_slot(pairs[k]), b = second_slot(pairs[k]);
     ASSERT_EQ(steps[k], lister(a, b)) << "pair " << a << ", " << b;
     const double dx = px[b] - px[a], dy = py[b] - py[a];
     overflowing += std::isfinite(dx) && std::isfinite(dy) && !std::isfinite(dx * dx + dy * dy) && steps[k] == kNever;
