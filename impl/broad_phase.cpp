@@ -285,15 +285,16 @@ std::optional<KeyPacking> digits_for(std::span<const CellKey> keys) {
 // by the packed bits as sort_slot_ordered sorts Entries, each pass in parts on up to `threads` threads; the
 // input is in slot order, so ties stay in slot order. Each entry is made where its slot's key was, and the
 // sorted ones then give `order` and, unpacked in place, leave `keys` holding the old keys[order[t]] at t.
-// Returns false, with nothing written, when digits_for does not apply (the guided path sorts those keys).
-bool sort_packed(Buffer<CellKey>& keys, Buffer<std::uint32_t>& order, unsigned threads) {
+// `other` is the passes' second buffer (resized to the keys'; it may be swapped with them). Returns false,
+// with nothing written, when digits_for does not apply (the guided path sorts those keys).
+bool sort_packed(Buffer<CellKey>& keys, Buffer<std::uint32_t>& order, unsigned threads, Buffer<std::uint64_t>& other) {
   static_assert(std::is_same_v<CellKey, std::uint64_t>, "an entry becomes its key in place");
   const std::size_t n = keys.size();
   const std::optional<KeyPacking> digits = digits_for(keys);
   if (!digits) return false;
   const KeyPacking& packing = *digits;
   for_each_slot(n, threads, [&](std::size_t s) { keys[s] = packing(keys[s]) << 32 | s; });
-  Buffer<std::uint64_t> other(n);
+  other.resize(n);
   Buffer<std::uint64_t>*from = &keys, *to = &other;
   const std::size_t chunks = chunk_count(n, threads);
   for (int shift = 32; shift < 32 + packing.bits(); shift += kRadixBits) {
@@ -404,11 +405,11 @@ bool CellOrder::sort_in_place(Buffer<CellKey>& keys, std::span<const CellKey> pr
     for (std::size_t s = 0; s < n; ++s) order[s] = static_cast<std::uint32_t>(s);
     return true;
   }
-  if (sort_packed(keys, order, threads)) return false;
+  if (sort_packed(keys, order, threads, scratch_)) return false;
   guided(keys, previous, order, threads);
-  Buffer<CellKey> sorted(n);
-  for_each_slot(n, threads, [&](std::size_t t) { sorted[t] = keys[order[t]]; });
-  keys.swap(sorted);
+  scratch_.resize(n);
+  for_each_slot(n, threads, [&](std::size_t t) { scratch_[t] = keys[order[t]]; });
+  keys.swap(scratch_);
   return false;
 }
 

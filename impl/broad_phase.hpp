@@ -211,6 +211,9 @@ class CellOrder {
     void merge_into(std::span<std::uint32_t> out);
   };
   std::vector<Chunk> chunks_;
+  // n keys' room, kept between sorts: the digits' second buffer, or the guided sort's gathered keys. A sort
+  // that took it new each time would write 8 bytes a slot of new memory per rebuild (impl/buffers.hpp).
+  Buffer<CellKey> scratch_;
 };
 
 // ── The query ─────────────────────────────────────────────────────────────────────────────────────────

@@ -162,7 +162,8 @@ class CellLayout {
 
  private:
   // column[t] ← column[permutation[t]] for every registered column, per chunk. Values that own memory (GMP
-  // integers) are swapped rather than copied (no allocation); the column is scratch afterwards either way.
+  // integers) are swapped rather than copied (no allocation); the column is scratch afterwards either way, and
+  // stays with the engine for the next gather.
   template <class T>
   void gather(unsigned threads, const Columns<T>& set);
   // True when the schedule learns from the tests of the lists: when it chooses their horizons. A list shorter
@@ -178,7 +179,11 @@ class CellLayout {
     bool learn;
   };
   std::optional<InStep> in_step_;
-  Buffer<std::uint32_t> id_, least_, permutation_, scratch_id_;
+  // The rebuild's scratch (permutation_, next_key_; the sort's and the gathers' own) stays between rebuilds,
+  // 28 bytes a circle or more, so that a rebuild writes no memory that an earlier one did not: each 2 MiB of
+  // new memory is a page fault, and on a virtual machine whose host backs the pages as they are first written
+  // one cost about 3 ms (impl/buffers.hpp).
+  Buffer<std::uint32_t> id_, least_, permutation_;
   std::vector<Buffer<std::uint32_t>> touched_;
   Buffer<CellKey> key_, next_key_;  // by the inflated radii of the last rebuild
   std::vector<unsigned> levels_;          // the levels that hold a circle, ascending, the global level excluded

@@ -49,36 +49,31 @@ void CellLayout::arrange(unsigned threads, std::uint64_t horizon, const Buffer<d
     grid_.plan(x, y, inflated);
     planned_horizon_ = horizon;
   }
-  next_key_.resize(n);
-  locate(grid_, threads, x, y, inflated, next_key_);
   // The first layout: no previous order to guide the sort, and id_ is still the identity.
   const bool first = key_.size() != n;
-  if (first) key_.clear();
   // The sort goes by digits where the keys pack (CellOrder); the last keys guide only keys that do not. A new
-  // plan gives every slot a key of other cells: then the last keys would guide nothing, and are not given.
-  // The keys are left in the new order by the sort itself.
+  // plan gives every slot a key of other cells: then the last keys would guide nothing, and the new keys are
+  // written over them; otherwise beside them. The keys are left in the new order by the sort itself.
+  const bool guided = !planned && !first;
+  Buffer<CellKey>& keys = guided ? next_key_ : key_;
+  keys.resize(n);
+  locate(grid_, threads, x, y, inflated, keys);
   const bool sorted = order_.sort_in_place(
-      next_key_, planned ? std::span<const CellKey>{} : std::span<const CellKey>{key_}, permutation_, threads);
-  std::swap(key_, next_key_);
+      keys, guided ? std::span<const CellKey>{key_} : std::span<const CellKey>{}, permutation_, threads);
+  if (guided) std::swap(key_, next_key_);
   if (!sorted) {
     // least_ is the identity between steps, so it stays.
     (gather(threads, columns), ...);
-    // The id, whose gather from the identity is the permutation itself. A gather's scratch is the size of the
-    // columns' (8 bytes a circle), which the buffers keep from the columns' gather (impl/buffers.hpp) for a
-    // request of that size next.
-    if (first) {
-      id_.swap(permutation_);
-    } else {
-      scratch_id_.resize(n);
-      gather(threads, Columns<std::uint32_t>{scratch_id_, {&id_}});
-    }
+    // The id last, written over the permutation, which it alone reads then: id[t] ← id[permutation[t]].
+    const std::size_t chunks = chunk_count(n, threads);
+    for_each_chunk(chunks, threads, [&](std::size_t c) {
+      for (std::size_t t = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1); t < e; ++t)
+        permutation_[t] = id_[permutation_[t]];
+    });
+    id_.swap(permutation_);
   }
   index_levels(key_, level_begin_, levels_);
   wide_runs_ = few_per_cell(key_);
-  // The sort's scratch (the permutation and the old keys, 12 bytes a circle) is given back before the list
-  // is built, where memory peaks, and taken again at the next rebuild; gather() gives back its own.
-  Buffer<std::uint32_t>().swap(permutation_);
-  Buffer<CellKey>().swap(next_key_);
 }
 
 template <class T>
@@ -97,9 +92,6 @@ void CellLayout::gather(unsigned threads, const Columns<T>& set) {
     });
     column->swap(set.scratch);
   }
-  // Plain values are given back with the rest of arrange()'s scratch; values that own memory (GMP integers)
-  // stay, each with its allocation, for the next gather.
-  if constexpr (std::is_trivially_copyable_v<T>) Buffer<T>().swap(set.scratch);
 }
 
 }  // namespace circles::impl

@@ -163,8 +163,9 @@ inline void PairList::build(const CellGrid& grid, const CellView& view, unsigned
     for (std::size_t k = 1; k < chunk.starts.size(); ++k) chunk.starts[k] += chunk.starts[k - 1];
     // A horizon of 0 has one first step, 0: each block's run is in bucket order as it was found.
     if (horizon == 0) return;
-    std::vector<std::uint32_t> at(chunk.starts.begin(), chunk.starts.end() - 1);
-    Buffer<ListedPair> run;
+    Buffer<std::uint32_t>& at = chunk.at;
+    Buffer<ListedPair>& run = chunk.run;
+    at.assign(chunk.starts.begin(), chunk.starts.end() - 1);
     for (std::size_t k = 0; k < blocks; ++k) {
       // Block k's pairs: [starts[k·K], starts[(k + 1)·K]), since every earlier block's pairs come first.
       run.assign(pairs.begin() + chunk.starts[k * kBuckets], pairs.begin() + chunk.starts[(k + 1) * kBuckets]);
