@@ -576,9 +576,16 @@ void ExactEngine::rebuild(Columns<Int>& s) {
   const double *px = a.x.data(), *py = a.y.data(), *r = padded_.data(), *ri = inflated_.data();
   layout_.list(stats_, options_, threads_, horizon, a.x, a.y, inflated_, Lister{px, py, r, ri, step, horizon});
   const PairList& pairs = layout_.pairs();
-  listed_.clear();
-  for (std::size_t t = 0; t < n; ++t)
-    if (pairs.listed(t)) listed_.push_back(static_cast<std::uint32_t>(t));
+  // The listed slots ascending, written without a branch: each slot at the next place, which only a listed
+  // one claims (a branch per slot mispredicts where listed and lonely slots mix, as in a sparse scene). The
+  // place past the last is room for the writes that follow it.
+  const std::size_t listed = n - pairs.lonely();
+  listed_.resize(listed + 1);
+  for (std::size_t t = 0, k = 0; t < n; ++t) {
+    listed_[k] = static_cast<std::uint32_t>(t);
+    k += pairs.listed(t);
+  }
+  listed_.resize(listed);
   // A walking list: the moves per step of its listed slots, V·RN(1/D), each within 2^-50·|w| + 2^-1075 of
   // v/60 (exact::approximate), and W, the largest of them; contacts copy them, so W holds for the list.
   walking_ = kFixed<Int> && pairs.lonely() * 4 >= n;
