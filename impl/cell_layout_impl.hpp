@@ -64,12 +64,15 @@ void CellLayout::arrange(unsigned threads, std::uint64_t horizon, const Buffer<d
   if (!sorted) {
     // least_ is the identity between steps, so it stays.
     (gather(threads, columns), ...);
-    // The id last, written over the permutation, which it alone reads then: id[t] ← id[permutation[t]].
-    const std::size_t chunks = chunk_count(n, threads);
-    for_each_chunk(chunks, threads, [&](std::size_t c) {
-      for (std::size_t t = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1); t < e; ++t)
-        permutation_[t] = id_[permutation_[t]];
-    });
+    // The id last, written over the permutation, which it alone reads then: id[t] ← id[permutation[t]]; the
+    // first layout's id, the identity, gives the permutation itself.
+    if (!first) {
+      const std::size_t chunks = chunk_count(n, threads);
+      for_each_chunk(chunks, threads, [&](std::size_t c) {
+        for (std::size_t t = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1); t < e; ++t)
+          permutation_[t] = id_[permutation_[t]];
+      });
+    }
     id_.swap(permutation_);
   }
   index_levels(key_, level_begin_, levels_);
