@@ -263,15 +263,6 @@ void repair(Buffer<Entry>& list, Buffer<Entry>& scratch) {
   }
 }
 
-// f(t) for every slot t of n, in chunks on up to `threads` threads.
-template <class F>
-void for_each_slot(std::size_t n, unsigned threads, F&& f) {
-  const std::size_t chunks = chunk_count(n, threads);
-  for_each_chunk(chunks, threads, [&](std::size_t c) {
-    for (std::size_t t = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1); t < e; ++t) f(t);
-  });
-}
-
 // The packing of the sort by digits, if it applies: kRadixFrom keys or more whose fields pack into 32 bits.
 std::optional<KeyPacking> digits_for(std::span<const CellKey> keys) {
   if (keys.size() < kRadixFrom) return std::nullopt;

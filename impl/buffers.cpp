@@ -15,10 +15,10 @@ namespace {
 std::size_t whole_huge_pages(std::size_t bytes) noexcept { return (bytes + kHugePage - 1) & ~(kHugePage - 1); }
 
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
-// Mappings given back, kept for the requests after them: a rebuild frees a sort's scratch and then asks for a
-// gather's scratch, a pair list and a permutation, and a kept mapping is memory whose pages are backed
-// already, where a new one costs a zeroed page at each first write (on a virtual machine, the host's fault
-// too). A request takes the smallest kept mapping that holds it, its tail beyond the request unmapped; one
+// Mappings given back, kept for the requests after them: a rebuild gives back its old pair list before its
+// sort and then asks for a new one, a growing buffer gives back its old block, and a kept mapping is memory
+// whose pages are backed already, where a new one costs a zeroed page at each first write (on a virtual
+// machine, the host's fault too). A request takes the smallest kept mapping that holds it, its tail beyond the request unmapped; one
 // that none holds gives back every kept mapping before it maps anew. So the buffers' memory and the kept
 // mappings together never exceed the most the buffers held at a new mapping: the peak is what it would be
 // without them.
@@ -51,7 +51,8 @@ class Kept {
   }
 
  private:
-  // A rebuild frees at most a pair list, a sort's two scratch lists and a gather's scratch before it asks again.
+  // A rebuild gives back its pair list (a block per chunk) and the guided sort's long lists before it asks
+  // again; its other scratch stays with its owners (impl/cell_layout.hpp).
   static constexpr std::size_t kKept = 4;
   struct Block {
     void* block;

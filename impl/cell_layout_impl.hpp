@@ -66,13 +66,7 @@ void CellLayout::arrange(unsigned threads, std::uint64_t horizon, const Buffer<d
     (gather(threads, columns), ...);
     // The id last, written over the permutation, which it alone reads then: id[t] ← id[permutation[t]]; the
     // first layout's id, the identity, gives the permutation itself.
-    if (!first) {
-      const std::size_t chunks = chunk_count(n, threads);
-      for_each_chunk(chunks, threads, [&](std::size_t c) {
-        for (std::size_t t = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1); t < e; ++t)
-          permutation_[t] = id_[permutation_[t]];
-      });
-    }
+    if (!first) for_each_slot(n, threads, [&](std::size_t t) { permutation_[t] = id_[permutation_[t]]; });
     id_.swap(permutation_);
   }
   index_levels(key_, level_begin_, levels_);

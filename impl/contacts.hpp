@@ -82,6 +82,15 @@ void for_each_chunk(std::size_t chunks, unsigned threads, F&& f) {
   if (error) std::rethrow_exception(error);
 }
 
+// f(t) for every slot t of n, in chunks on up to `threads` threads.
+template <class F>
+void for_each_slot(std::size_t n, unsigned threads, F&& f) {
+  const std::size_t chunks = chunk_count(n, threads);
+  for_each_chunk(chunks, threads, [&](std::size_t c) {
+    for (std::size_t t = chunk_begin(n, chunks, c), e = chunk_begin(n, chunks, c + 1); t < e; ++t) f(t);
+  });
+}
+
 // keys[t] = grid.key(px[t], py[t], r[t]) for every slot, per chunk. Where a circle has drifted out of the planned
 // grid (its cell would clamp, which is correct but slow), the grid is planned again and the keys recomputed.
 inline void locate(CellGrid& grid, unsigned threads, std::span<const double> px, std::span<const double> py,
