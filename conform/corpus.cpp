@@ -1,6 +1,7 @@
 #include "conform/corpus.hpp"
 
 #include "conform/json_reader.hpp"
+#include "formats/input_file.hpp"
 #include "formats/json_number.hpp"
 #include "formats/json_world.hpp"
 #include "formats/output_file.hpp"
@@ -11,8 +12,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <sstream>
 
 namespace circles::conform {
 
@@ -169,11 +168,13 @@ std::vector<std::pair<std::filesystem::path, StoredCounterexample>> load_corpus(
   std::sort(files.begin(), files.end());
   std::vector<std::pair<std::filesystem::path, StoredCounterexample>> corpus;
   for (const std::filesystem::path& file : files) {
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (!in) throw CorpusError(file.string() + ": cannot read it");
-    corpus.emplace_back(file, from_json(text.str(), file.string()));
+    std::string text;
+    try {
+      text = formats::read_input(file.string());
+    } catch (const formats::InputError& e) {
+      throw CorpusError(file.string() + ": " + e.what());
+    }
+    corpus.emplace_back(file, from_json(text, file.string()));
   }
   return corpus;
 }

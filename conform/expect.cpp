@@ -1,10 +1,9 @@
 #include "conform/expect.hpp"
 
+#include "formats/input_file.hpp"
 #include "formats/json_number.hpp"
 
 #include <algorithm>
-#include <fstream>
-#include <sstream>
 
 namespace circles::conform {
 namespace {
@@ -82,11 +81,14 @@ Expectations parse_expectations(std::string_view text, const std::filesystem::pa
 }
 
 Expectations read_expectations(const std::filesystem::path& file, Profile profile) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (!in) throw ExpectError(file.string() + ": cannot read it");
-  return parse_expectations(text.str(), file, profile);
+  const std::string name = formats::input_name(file.string());
+  std::string text;
+  try {
+    text = formats::read_input(file.string());
+  } catch (const formats::InputError& e) {
+    throw ExpectError(name + ": " + e.what());
+  }
+  return parse_expectations(text, name, profile);
 }
 
 void apply(Verdict& verdict, const Expectations& expectations) {

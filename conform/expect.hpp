@@ -40,7 +40,8 @@ struct Expectations {
 
 // Parses `text`, named `file` in messages. Throws ExpectError("FILE:LINE: why").
 Expectations parse_expectations(std::string_view text, const std::filesystem::path& file, Profile profile);
-// Reads and parses `file`. Throws ExpectError, also for a file that cannot be read.
+// Reads and parses `file` ("-": the standard input). Throws ExpectError, also for a file that cannot be read,
+// with the system's reason: "x.expect: cannot open the file: No such file or directory".
 Expectations read_expectations(const std::filesystem::path& file, Profile profile);
 
 // Judges the verdict against the expectations: a listed family that failed becomes expected_failure, one that

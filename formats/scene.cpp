@@ -1,5 +1,6 @@
 #include "formats/scene.hpp"
 
+#include "formats/input_file.hpp"
 #include "formats/json_number.hpp"
 #include "formats/plain_line.hpp"
 #include "formats/protocol.hpp"  // printable
@@ -11,11 +12,7 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <sstream>
 #include <utility>
 
@@ -285,15 +282,12 @@ std::string whole_text(std::istream& in, const std::string& source) {
   return text.str();
 }
 
-std::ifstream open_scene(const std::string& path) {
-  // A directory opens as a stream on Linux and reads as empty, which would be reported as an empty file.
-  std::error_code ignored;
-  if (std::filesystem::is_directory(path, ignored))
-    throw SceneError(path + ": cannot read the file: it is a directory");
-  errno = 0;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw SceneError(path + ": cannot open the file: " + (errno ? std::strerror(errno) : "open failed"));
-  return in;
+std::unique_ptr<std::istream> open_scene(const std::string& path) {
+  try {
+    return open_input(path);
+  } catch (const InputError& e) {
+    throw SceneError(input_name(path) + ": " + e.what());
+  }
 }
 
 }  // namespace
@@ -322,14 +316,10 @@ SceneWorld read_scene_world(std::istream& in, const std::string& source, std::si
   return std::move(*world);
 }
 
-Scene load_scene(const std::string& path) {
-  std::ifstream in = open_scene(path);
-  return read_scene(in, path, kStreamPiece);
-}
+Scene load_scene(const std::string& path) { return read_scene(*open_scene(path), input_name(path), kStreamPiece); }
 
 SceneWorld load_scene_world(const std::string& path) {
-  std::ifstream in = open_scene(path);
-  return read_scene_world(in, path, kStreamPiece);
+  return read_scene_world(*open_scene(path), input_name(path), kStreamPiece);
 }
 
 Scene default_scene() { return parse_scene(default_scene_json, "<embedded default scene>"); }

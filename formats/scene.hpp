@@ -50,7 +50,8 @@ struct Scene {
 // resolved profile (r < 0). Nesting of any depth is read without recursion.
 Scene parse_scene(std::string_view text, const std::string& source);
 
-// The same, from a file; a missing file, a directory or a read error is a SceneError too. A file whose circles
+// The same, from a file, or from the standard input for "-" (named "<stdin>" in messages); a missing file, a
+// directory or a read error is a SceneError too. A file whose circles
 // are all in the compact form is read in pieces (formats/streamed.hpp), any other by parse_scene whole: the
 // scene and every message are parse_scene's either way.
 Scene load_scene(const std::string& path);
@@ -69,8 +70,9 @@ struct SceneWorld {
 // compact circles is read in pieces into doubles and holds, beyond them, one piece of text (1 MiB).
 SceneWorld load_scene_world(const std::string& path);
 
-// The readers above on a stream (`in` must be seekable: a text the fast path does not take is read again from
-// its start), reading `piece` bytes at a time; tests and the fuzzer read strings this way.
+// The readers above on a stream, reading `piece` bytes at a time; tests and the fuzzer read strings this way.
+// The fast path needs a stream that can seek back to its start (a text it does not take is read again): one
+// that cannot, a pipe, is read whole by parse_scene.
 Scene read_scene(std::istream& in, const std::string& source, std::size_t piece);
 SceneWorld read_scene_world(std::istream& in, const std::string& source, std::size_t piece);
 

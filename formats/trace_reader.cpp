@@ -1,9 +1,9 @@
 #include "formats/trace_reader.hpp"
 
+#include "formats/input_file.hpp"
+
 #include <cerrno>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <limits>
 #include <new>
 #include <stdexcept>
@@ -29,13 +29,12 @@ TraceReadError::TraceReadError(const std::string& file, std::size_t line_number,
       line(line_number),
       reason(why) {}
 
-TraceReader::TraceReader(const std::string& path) : source_(path) {
-  // A directory opens as a stream on Linux and reads as empty, which would be reported as an empty file.
-  std::error_code ignored;
-  if (std::filesystem::is_directory(path, ignored)) fail(0, "cannot read the file: it is a directory");
-  auto file = std::make_unique<std::ifstream>(path, std::ios::binary);
-  if (!*file) fail(0, std::string("cannot open the file: ") + std::strerror(errno));
-  owned_ = std::move(file);
+TraceReader::TraceReader(const std::string& path) : source_(input_name(path)) {
+  try {
+    owned_ = open_input(path);
+  } catch (const InputError& e) {
+    fail(0, e.what());
+  }
   in_ = owned_.get();
 }
 

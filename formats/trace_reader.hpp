@@ -37,7 +37,8 @@ class TraceReadError : public std::runtime_error {
 
 class TraceReader {
  public:
-  // Reads the file at `path`. Throws TraceReadError when it is missing, a directory or cannot be opened.
+  // Reads the file at `path`, or the standard input for "-" (named "<stdin>" in messages). Throws
+  // TraceReadError when it is missing, a directory or cannot be opened.
   explicit TraceReader(const std::string& path);
   // Reads `in`, named `source` in messages (tests and the fuzzer read strings this way), `piece` bytes at a
   // time on the fast path.

@@ -283,6 +283,7 @@ std::string frame_name(std::uint64_t step) {
 }
 
 FrameDirectory::FrameDirectory(std::string dir) : dir_(std::move(dir)) {
+  if (dir_ == "-") return;  // no directory: the frames go to stdout
   const std::string what = "render directory " + dir_;
   std::error_code error;
   std::filesystem::create_directories(dir_, error);

@@ -115,11 +115,13 @@ std::string frame_path(const std::string& dir, std::uint64_t step);
 
 // The directory of --render DIR. The constructor creates it (and its parents) if missing and checks that a
 // file can be made in it, before any step is taken; it throws OutputError: "render directory DIR: cannot
-// create it: Not a directory", "render directory DIR: cannot write in it: Permission denied".
+// create it: Not a directory", "render directory DIR: cannot write in it: Permission denied". DIR "-" is no
+// directory but stdout, where the frames go one after another, a stream of PNGs (what ffmpeg -f image2pipe
+// reads).
 class FrameDirectory {
  public:
   explicit FrameDirectory(std::string dir);
-  std::string path(std::uint64_t step) const { return frame_path(dir_, step); }
+  std::string path(std::uint64_t step) const { return dir_ == "-" ? dir_ : frame_path(dir_, step); }
   void write(const Frame& frame, std::uint64_t step) const;
 
  private:

@@ -18,6 +18,8 @@ extern char** environ;
 
 namespace circles::pictures {
 
+using formats::output_kind;
+
 std::string find_on_path(std::string_view name) {
   const char* path = std::getenv("PATH");
   const std::string_view dirs = path ? path : "/bin:/usr/bin";
@@ -34,12 +36,15 @@ std::string find_on_path(std::string_view name) {
 }
 
 Video::Video(std::string path) : path_(std::move(path)) {
-  if (!path_.ends_with(".mp4"))
+  const bool in_place = output_kind(path_) == OutputFile::Kind::in_place;
+  if (!in_place && !path_.ends_with(".mp4"))
     throw VideoError("--video " + path_ + ": the video is H.264 in MP4, so its name must end in .mp4");
   const std::string ffmpeg = find_on_path("ffmpeg");
   if (ffmpeg.empty()) throw VideoError("--video needs ffmpeg, which is not installed (apt-get install ffmpeg)");
   file_.emplace(path_, "video " + path_);
-  file_->close();  // ffmpeg writes it by name
+  // A file renamed into place is written by ffmpeg by name, and seekable: the index goes first (+faststart).
+  // A pipe or a device is ffmpeg's standard output, which cannot seek: a fragmented MP4, its index in pieces.
+  if (!in_place) file_->close();
 
   std::signal(SIGPIPE, SIG_IGN);  // a write to a stopped ffmpeg fails with EPIPE, which add() reports
   int fds[2];
@@ -47,7 +52,8 @@ Video::Video(std::string path) : path_(std::move(path)) {
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_adddup2(&actions, fds[0], STDIN_FILENO);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+  if (in_place) posix_spawn_file_actions_adddup2(&actions, fileno(file_->file()), STDOUT_FILENO);
+  else posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
   posix_spawnattr_t attributes;
   posix_spawnattr_init(&attributes);
   sigset_t defaults;  // SIGPIPE back to its default in ffmpeg
@@ -60,7 +66,8 @@ Video::Video(std::string path) : path_(std::move(path)) {
   std::vector<std::string> args{ffmpeg, "-hide_banner", "-nostats", "-loglevel", "error",
                                 "-f", "rawvideo", "-pixel_format", "bgr0", "-video_size", size, "-framerate", rate,
                                 "-i", "pipe:0", "-an", "-c:v", "libx264", "-pix_fmt", "yuv420p",
-                                "-movflags", "+faststart", "-f", "mp4", "-y", file_->temp_path()};
+                                "-movflags", in_place ? "frag_keyframe+empty_moov" : "+faststart", "-f", "mp4", "-y",
+                                in_place ? "pipe:1" : file_->temp_path()};
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -74,6 +81,7 @@ Video::Video(std::string path) : path_(std::move(path)) {
     close(std::exchange(pipe_, -1));
     throw VideoError("video " + path_ + ": cannot start " + ffmpeg + ": " + std::strerror(spawned));
   }
+  file_->written_by(pid_);
 }
 
 Video::~Video() { stop(); }
@@ -86,6 +94,7 @@ void Video::stop() noexcept {
     while (waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
     }
     pid_ = -1;
+    if (file_) file_->written_by(0);
   }
 }
 
@@ -94,6 +103,7 @@ std::string Video::wait() {
   while (waitpid(pid_, &status, 0) < 0)
     if (errno != EINTR) return std::string("cannot be waited for: ") + std::strerror(errno);
   pid_ = -1;
+  file_->written_by(0);
   if (WIFEXITED(status))
     return WEXITSTATUS(status) == 0 ? "" : "exited with status " + std::to_string(WEXITSTATUS(status));
   if (WIFSIGNALED(status)) return "was killed by signal " + std::to_string(WTERMSIG(status));

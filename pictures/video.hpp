@@ -6,7 +6,10 @@
 // The command (docs/run.md): ffmpeg -hide_banner -nostats -loglevel error -f rawvideo -pixel_format bgr0
 // -video_size 1280x720 -framerate 60 -i pipe:0 -an -c:v libx264 -pix_fmt yuv420p -movflags +faststart -f mp4
 // -y FILE.partial-XXXXXX. ffmpeg writes the temporary file; commit() renames it to FILE once ffmpeg has
-// exited with status 0, and a video dropped without commit() stops ffmpeg and removes the file.
+// exited with status 0, and a video dropped without commit() stops ffmpeg and removes the file. A video that
+// goes to a pipe or a device ("-" for stdout, a FIFO, /dev/null: formats/output_file.hpp), which cannot seek,
+// is a fragmented MP4 on ffmpeg's standard output: -movflags frag_keyframe+empty_moov -f mp4 -y pipe:1; its
+// name need not end in .mp4.
 #pragma once
 
 #include "formats/output_file.hpp"
@@ -40,8 +43,9 @@ inline constexpr int kVideoFrameRate = 60;
 
 class Video {
  public:
-  // Refuses a name without the .mp4 extension and a machine without ffmpeg (VideoError, before anything is
-  // created), then creates FILE.partial-XXXXXX beside FILE (OutputError when it cannot) and starts ffmpeg.
+  // Refuses a file name without the .mp4 extension and a machine without ffmpeg (VideoError, before anything
+  // is created), then creates FILE.partial-XXXXXX beside FILE or opens the pipe or device (OutputError when it
+  // cannot) and starts ffmpeg.
   explicit Video(std::string path);
   Video(const Video&) = delete;
   Video& operator=(const Video&) = delete;

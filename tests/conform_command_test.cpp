@@ -166,11 +166,13 @@ TEST(ConformCommand, an_expectation_file_that_does_not_parse_exits_2_naming_its_
                     ":3: the entry names no family: expected FAMILY fail REASON\n");
 }
 
-TEST(ConformCommand, a_missing_expectation_file_exits_2_naming_it) {
+TEST(ConformCommand, a_missing_expectation_file_exits_2_naming_it_and_the_systems_reason) {
   const TempDir dir;
   ConformCommandOptions options = double_engine();
   options.expect = (dir.path / "missing.expect").string();
-  expect_exit_2(options, "circles conform: --expect: " + options.expect + ": cannot read it\n");
+  expect_exit_2(options, "circles conform: --expect: " + options.expect + ": cannot open the file: No such file or directory\n");
+  options.expect = "/nonexistent";
+  expect_exit_2(options, "circles conform: --expect: /nonexistent: cannot open the file: No such file or directory\n");
 }
 
 TEST(ConformCommand, a_conforming_engine_exits_0_with_the_verdict_on_the_first_line) {

@@ -54,7 +54,11 @@ TEST(expectations, read_a_file_with_the_line_and_reason_of_each_family_or_name_t
   const TempDir dir;
   const auto missing = thrown<ExpectError>([&] { read_expectations(dir.path / "missing.expect", Profile::resolved); });
   ASSERT_TRUE(missing);
-  EXPECT_EQ(std::string(missing->what()), (dir.path / "missing.expect").string() + ": cannot read it");
+  EXPECT_EQ(std::string(missing->what()),
+            (dir.path / "missing.expect").string() + ": cannot open the file: No such file or directory");
+  const auto directory = thrown<ExpectError>([&] { read_expectations(dir.path, Profile::resolved); });
+  ASSERT_TRUE(directory);
+  EXPECT_EQ(std::string(directory->what()), dir.path.string() + ": cannot read the file: it is a directory");
   const std::string file = dir.write("known.expect", "# why\ntangency fail hypot\n\nlattice fail naive update\n");
   const Expectations read = read_expectations(file, Profile::resolved);
   EXPECT_EQ(read.file, std::filesystem::path(file));
