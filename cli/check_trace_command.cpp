@@ -1,5 +1,8 @@
 #include "cli/check_trace_command.hpp"
 
+#include "cli/counted.hpp"
+#include "cli/options.hpp"
+#include "formats/input_file.hpp"
 #include "formats/json_number.hpp"
 #include "formats/protocol.hpp"
 #include "formats/trace_reader.hpp"
@@ -16,11 +19,12 @@ using formats::TraceReadError;
 void print_check(const TraceCheck& check, const std::string& source, TraceReference kind, std::ostream& out) {
   const bool exact = kind == TraceReference::exact;
   const std::string range = "steps " + std::to_string(check.first_step) + " to " + std::to_string(check.last_step) +
-                            ", " + std::to_string(check.circles) + " circles";
+                            ", " + counted(check.circles, "circle");
   if (!check.divergence) {
     out << "circles check-trace: " << source << ": agrees with "
-        << (exact ? "the oracle's exact sequence, rounded," : "the correctly rounded step") << " at each of its "
-        << check.steps() << " steps (" << range << "); state hash of step " << check.last_step << ": "
+        << (exact ? "the oracle's exact sequence, rounded," : "the correctly rounded step")
+        << (check.steps() == 1 ? " at its one step" : " at each of its " + counted(check.steps(), "step")) << " ("
+        << range << "); state hash of step " << check.last_step << ": "
         << hash_text(check.last_hash) << ", trajectory hash: " << hash_text(check.trajectory_hash) << "\n";
     return;
   }
@@ -45,16 +49,19 @@ CLI::App* add_check_trace_command(CLI::App& app, CheckTraceCommandOptions& optio
   CLI::App* check_trace = app.add_subcommand(
       "check-trace",
       "Check a trace recorded by any implementation step by step against the spec; exits 0 (it agrees), 1 (a world "
-      "differs) or 2 (not a trace) (docs/vectors.md)");
-  // No CLI::ExistingFile: a missing file is reported by the trace reader, as every other bad trace is.
-  check_trace->add_option("trace", options.file, "The trace: JSON Lines, one {\"step\": t, \"circles\": [...]} per world")
-      ->required();
-  check_trace
-      ->add_option("--engine", options.engine,
-                   "double: each world the correctly rounded step of the one before; exact: the oracle's exact "
-                   "sequence from the first world, rounded")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"double", "exact"}));
+      "differs) or 2 (not a trace) (see vectors.md in the docs)");
+  // A missing file is reported by the trace reader, as every other bad trace is.
+  takes(check_trace
+            ->add_option("trace", options.file,
+                         "The trace, JSON Lines, one {\"step\": t, \"circles\": [...]} per world, or - for stdin")
+            ->required(),
+        "TRACE", "a trace file to read, or - for stdin");
+  takes_one_of(check_trace
+                   ->add_option("--engine", options.engine,
+                                "double: each world the correctly rounded step of the one before; exact: the oracle's "
+                                "exact sequence from the first world, rounded")
+                   ->capture_default_str(),
+               "NAME", {"double", "exact"});
   return check_trace;
 }
 
@@ -62,13 +69,13 @@ int check_trace_command(const std::string& path, TraceReference kind, std::ostre
   try {
     TraceReader reader(path);
     const TraceCheck check = check_trace(reader, kind);
-    print_check(check, path, kind, out);
+    print_check(check, reader.source(), kind, out);
     return check.divergence ? 1 : 0;
   } catch (const TraceReadError& e) {
     err << "circles check-trace: " << e.what() << "\n";
     return 2;
   } catch (const std::bad_alloc&) {  // the reader's two worlds fit, the reference's step on them did not
-    err << "circles check-trace: " << path << ": the worlds are too large to check in memory\n";
+    err << "circles check-trace: " << formats::input_name(path) << ": the worlds are too large to check in memory\n";
     return 2;
   }
 }

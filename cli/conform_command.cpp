@@ -117,60 +117,79 @@ CLI::App* add_conform_command(CLI::App& app, ConformCommandOptions& options) {
   CLI::App* conform = app.add_subcommand(
       "conform",
       "Check an engine (--engine) or any program speaking the step protocol (--exec) against the oracle; exits 0 "
-      "(conforms), 1 (a counterexample) or 2 (cannot check) (docs/conform.md)");
+      "(conforms), 1 (a counterexample) or 2 (cannot check) (see conform.md in the docs)");
   add_engine_options(conform, options.engine, options.threads);
-  conform->add_option("--exec", options.exec,
-                      "Check this program instead, run as /bin/sh -c COMMAND (docs/protocol.md)");
-  conform
-      ->add_option("--level", options.level,
-                   "exact (the nearest double), faithful (1 ulp) or ulps:K; decisions always exact")
-      ->capture_default_str();
-  // --cases and --case up to 2^63 - 1, as the counts of run and vectors: CLI11 reads "-1" as 2^64 - 1 (strtoull),
-  // which as --cases would run for ever and as --case would check no case at all (I + 1 wraps to 0) and conform.
+  takes(conform->add_option("--exec", options.exec,
+                            "Check this program instead, run as /bin/sh -c COMMAND (see protocol.md in the docs)"),
+        "COMMAND", "a shell command");
+  takes(conform
+            ->add_option("--level", options.level,
+                         "exact (the nearest double), faithful (1 ulp) or ulps:K; decisions always exact")
+            ->capture_default_str(),
+        "LEVEL", "exact, faithful or ulps:K");
+  // --cases and --case up to 2^63 - 1, as the counts of run and vectors.
   constexpr std::uint64_t kMaxCases = std::numeric_limits<std::int64_t>::max();
-  conform->add_option("--cases", options.cases, "Worlds to check")
-      ->capture_default_str()
-      ->check(CLI::Range(std::uint64_t{0}, kMaxCases));
-  conform->add_option("--seed", options.seed, "Seed of the worlds (default: a random one, printed)");
-  conform->add_option("--steps", options.steps, "Steps chained per world, the candidate fed its own answers")
-      ->capture_default_str()
-      ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1000000}));
-  conform->add_option("--profile", options.profile,
-                       "resolved, or literal (only worlds where the seed's step is defined, checked against it)")
-      ->capture_default_str();
-  conform->add_option("--shard", options.shard,
-                      "Check only the rounds q (of one case per family) with q mod n == i, for parallel jobs")
-      ->capture_default_str();
-  conform->add_option("--save", options.save,
-                      "Replay every counterexample stored in DIR first, and store a new one there (with its picture)");
-  conform->add_option("--svg", options.svg,
-                      "Draw a counterexample's picture in FILE (default: beside it in --save DIR, else none)");
-  conform->add_option("--timeout", options.timeout,
-                      "Seconds to wait for each answer, up to 512 circles; (n/512)^2 times as long for n circles above")
-      ->capture_default_str()
-      ->check(CLI::Range(0.001, 3600.0));
-  conform->add_option("--max-circles", options.max_circles,
-                      "The most circles of a big world (docs/conform.md, Big worlds): 4097 crosses every power of two "
-                      "up to 4096; fast programs go to 100000 or more")
-      ->capture_default_str()
-      ->check(CLI::Range(circles::properties::kMinMaxCircles, std::size_t{1} << 31));
-  conform->add_option("--case", options.only_case, "Check only this case (to replay a counterexample)")
-      ->check(CLI::Range(std::uint64_t{0}, kMaxCases));
-  conform->add_option("--report", options.report,
-                      "Also write the verdict as JSON to FILE (docs/conform.md, Reports for CI)");
-  conform->add_option("--junit", options.junit,
-                      "Also write the verdict as JUnit XML to FILE, a test case per family");
+  takes_whole_number(conform->add_option("--cases", options.cases, "Worlds to check")->capture_default_str(), "N", 0,
+                     kMaxCases);
+  takes_whole_number(conform->add_option("--seed", options.seed, "Seed of the worlds (default: a random one, printed)"),
+                     "N", 0, std::numeric_limits<std::uint64_t>::max());
+  takes_whole_number(
+      conform->add_option("--steps", options.steps, "Steps chained per world, the candidate fed its own answers")
+          ->capture_default_str(),
+      "N", 1, 1000000);
+  takes_one_of(conform
+                   ->add_option("--profile", options.profile,
+                                "resolved, or literal (only worlds where the seed's step is defined, checked against it)")
+                   ->capture_default_str(),
+               "NAME", {"resolved", "literal"});
+  takes(conform
+            ->add_option("--shard", options.shard,
+                         "Check only the rounds q (of one case per family) with q mod n == i, for parallel jobs")
+            ->capture_default_str(),
+        "I/N", "a shard i/n with 0 <= i < n");
+  takes_directory(conform->add_option("--save", options.save,
+                                      "Replay every counterexample stored in DIR first, and store a new one there "
+                                      "(with its picture)"),
+                  "a directory of counterexamples");
+  takes_output_file(conform->add_option(
+      "--svg", options.svg, "Draw a counterexample's picture in FILE (default: beside it in --save DIR, else none)"));
+  takes_number(conform
+                   ->add_option("--timeout", options.timeout,
+                                "Seconds to wait for each answer, up to 512 circles; (n/512)^2 times as long for n "
+                                "circles above")
+                   ->capture_default_str(),
+               "SECONDS", "a number from 0.001 to 3600", [](double x) { return x >= 0.001 && x <= 3600; });
+  takes_whole_number(conform
+                         ->add_option("--max-circles", options.max_circles,
+                                      "The most circles of a big world (conform.md in the docs, Big worlds): 4097 "
+                                      "crosses every power of two up to 4096; fast programs go to 100000 or more")
+                         ->capture_default_str(),
+                     "N", circles::properties::kMinMaxCircles, std::size_t{1} << 31);
+  takes_whole_number(conform->add_option("--case", options.only_case, "Check only this case (to replay a counterexample)"),
+                     "N", 0, kMaxCases);
+  takes_output_file(conform->add_option(
+      "--report", options.report, "Also write the verdict as JSON to FILE (conform.md in the docs, Reports for CI)"));
+  takes_output_file(
+      conform->add_option("--junit", options.junit, "Also write the verdict as JUnit XML to FILE, a test case per family"));
   conform->add_flag("--keep-going", options.keep_going,
                     "Check every family, shrink a counterexample per failing family, and print a row per family");
-  CLI::Option* families_option = conform->add_option("--families", options.families,
-                                                     "Check only these families, A,B,... (docs/conform.md)");
-  conform->add_option("--skip-families", options.skip_families, "Check every family but these, A,B,...")
-      ->excludes(families_option);
-  conform->add_option("--expect", options.expect,
-                      "Known failures, FAMILY fail REASON a line: failing them passes, passing them fails (implies "
-                      "--keep-going)");
-  conform->add_option("--write-expect", options.write_expect,
-                      "Write this run's failing families to FILE as an expectation file (implies --keep-going)");
+  // --families with nothing after it lists the families (as `circles families` does) instead of checking.
+  CLI::Option* families_option =
+      takes(conform
+                ->add_option("--families", options.families,
+                             "Check only these families, A,B,...; with no list, list the families (conform.md in the "
+                             "docs)")
+                ->expected(0, 1),
+            "LIST", "families A,B,...");
+  takes(conform->add_option("--skip-families", options.skip_families, "Check every family but these, A,B,...")
+            ->excludes(families_option),
+        "LIST", "families A,B,...");
+  takes_input_file(conform->add_option("--expect", options.expect,
+                                       "Known failures, FAMILY fail REASON a line: failing them passes, passing them "
+                                       "fails (implies --keep-going)"));
+  takes_output_file(conform->add_option(
+      "--write-expect", options.write_expect,
+      "Write this run's failing families to FILE as an expectation file (implies --keep-going)"));
   return conform;
 }
 

@@ -122,10 +122,25 @@ void print_families(std::ostream& out, std::span<const conform::FamilyResult> fa
 
 // The first line of a run's verdict without a counterexample, or of its --keep-going table: "circles conform:
 // CANDIDATE conforms: 1000 cases (2 skipped: …), 1 step each (2 for tangent-after-step, whose boundary comes
-// only at step 2), level exact, seed 3, resolved profile".
+// only at step 2), level exact, seed 3, resolved profile"; against an expectation file with failures listed,
+// "CANDIDATE passes with 22 expected failures, 3 families pass: 1000 cases, …".
 std::string summary_line(const Verdict& v) {
   const conform::Options& o = v.options;
-  std::string line = "circles conform: " + v.candidate + " " + name(v.outcome) + ": " + counted(v.cases, "case");
+  // Against an expectation file, a run whose listed families failed as listed passes, but does not conform:
+  // "22 expected failures, 3 families pass".
+  const auto with = [&](conform::FamilyStatus status) {
+    return static_cast<std::uint64_t>(
+        std::count_if(v.families.begin(), v.families.end(), [&](const auto& f) { return f.status == status; }));
+  };
+  const std::uint64_t expected = with(conform::FamilyStatus::expected_failure);
+  std::string line = "circles conform: " + v.candidate + " ";
+  if (v.outcome == Outcome::conforms && expected > 0)
+    line += "passes with " + counted(expected, "expected failure") + ", " +
+            counted(with(conform::FamilyStatus::passed), "family", "families") + " " +
+            (with(conform::FamilyStatus::passed) == 1 ? "passes" : "pass");
+  else
+    line += name(v.outcome);
+  line += ": " + counted(v.cases, "case");
   if (v.skipped)
     line += " (" + std::to_string(v.skipped) + " skipped: " + (v.skipped == 1 ? "its" : "their") +
             " next world leaves the double range)";
@@ -203,7 +218,13 @@ void print_table(const Verdict& v, std::ostream& out) {
     if (!c.saved.empty()) out << indent << "saved: " << c.saved.string() << "\n";
   }
   std::string summary;
-  for (const auto& [status, n] : counts) summary += (summary.empty() ? "" : ", ") + std::to_string(n) + " " + status;
+  for (const auto& [status, n] : counts) {
+    // "1 expected failure", "2 expected failures", "3 unexpected passes"; "passed", "skipped", ... as they are.
+    std::string plural = status;
+    if (n != 1 && status.ends_with("failure")) plural += "s";
+    else if (n != 1 && status.ends_with("pass")) plural += "es";
+    summary += (summary.empty() ? "" : ", ") + std::to_string(n) + " " + plural;
+  }
   out << "  families: " << summary << "\n";
 }
 
@@ -242,7 +263,8 @@ int print_verdict(const Verdict& verdict, const std::filesystem::path& svg, std:
     case Outcome::cannot_check:
       break;
   }
-  err << "circles conform: " << verdict.error << "\n";
+  // The seed, so that a run with a random one can be run again.
+  err << "circles conform: " << verdict.error << " (seed " << verdict.options.seed << ")\n";
   return 2;
 }
 

@@ -21,7 +21,9 @@ std::string counterexample_text(const conform::Verdict& verdict);
 
 // Prints the verdict on `out` ("circles conform: … conforms: 1000 cases, …" with the cases per family, or the
 // counterexample with its worlds, where it was saved, its picture and its replay line), drawing the picture
-// to picture_path(verdict, svg); a verdict that cannot check goes to `err` as "circles conform: reason".
+// to picture_path(verdict, svg); a verdict that cannot check goes to `err` as "circles conform: reason (seed
+// S)". A verdict that passes only because an expectation file lists its failures does not say "conforms":
+// "… passes with 22 expected failures, 3 families pass: …".
 // With --keep-going (Options::keep_going) it prints a table instead: a row per family with its cases, status
 // and, for a family that failed, its counterexample in a line and its replay line, and draws the picture of the
 // run's counterexample (the first failure not expected). Returns the exit status:

@@ -4,6 +4,9 @@
 // step.
 #include "cli/check_trace_command.hpp"
 #include "cli/conform_command.hpp"
+#include "cli/families_command.hpp"
+#include "cli/help.hpp"
+#include "cli/interrupt.hpp"
 #include "cli/main_job.hpp"
 #include "cli/merge_command.hpp"
 #include "cli/oracle_command.hpp"
@@ -14,7 +17,9 @@
 #include "cli/vectors.hpp"
 #include "cli/version.hpp"
 #include "engines/registry.hpp"
+#include "formats/output_file.hpp"
 #include "formats/scene.hpp"
+#include "properties/boundaries.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -24,7 +29,10 @@
 #include <cstdint>
 #include <iostream>
 #include <limits>
+#include <memory>
 #include <optional>
+#include <string>
+#include <vector>
 
 namespace {
 
@@ -40,8 +48,10 @@ struct Commands {
   MergeCommandOptions merge_options;
   VectorsOptions vectors_options;
   CheckTraceCommandOptions check_trace_options;
+  FamiliesCommandOptions families_options;
+  std::vector<std::string> help_topic;  // `circles help COMMAND...`
   CLI::App *oracle = nullptr, *serve = nullptr, *run = nullptr, *conform = nullptr, *merge = nullptr,
-           *vectors = nullptr, *check_trace = nullptr;
+           *vectors = nullptr, *check_trace = nullptr, *families = nullptr, *help = nullptr;
 };
 
 // The commands, in the order --help lists them.
@@ -53,6 +63,11 @@ void declare(CLI::App& app, Commands& c) {
   c.merge = add_report_command(app, c.merge_options);
   c.vectors = add_vectors_command(app, c.vectors_options);
   c.check_trace = add_check_trace_command(app, c.check_trace_options);
+  c.families = add_families_command(app, c.families_options);
+  c.help = app.add_subcommand("help", "Show the help of circles, or of COMMAND (as `circles COMMAND --help` does)");
+  takes(c.help->add_option("command", c.help_topic, "The command, and the subcommand for one that has them"),
+        "COMMAND", "commands of circles");
+  for (CLI::App* command : app.get_subcommands({})) command->group("Commands");
 }
 
 // Parses the command line; the exit status when the program ends there (--help, --version, a usage error).
@@ -69,35 +84,80 @@ std::optional<int> parse(CLI::App& app, Commands& c, int argc, char** argv) {
         // The help shows 100; the command run without --help names what is wrong with the scene.
       }
     return app.exit(e);
-  } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    // Every usage error exits 2, like every other bad input.
-    std::cerr << usage_error(app, e) << "\n";
-    return 2;
+    // --help, --version: printed on stdout, status 0. A usage error: usage_error's line on stderr (the
+    // failure-message hook), and status 2, like every other bad input.
+    return app.exit(e) == 0 ? 0 : 2;
   }
   return std::nullopt;
 }
 
-// The command parsed, run. A progress line or bar only on a terminal: output to a pipe, a file or CI stays free
-// of it.
-int dispatch(Commands& c) {
+// `circles help COMMAND...`: the help of the command named, as its --help shows it.
+int help_command(const CLI::App& app, const std::vector<std::string>& topic) {
+  const CLI::App* at = &app;
+  for (const std::string& word : topic) {
+    std::vector<std::string> names;
+    const CLI::App* next = nullptr;
+    for (const CLI::App* s : at->get_subcommands({})) {
+      names.push_back(s->get_name());
+      if (s->get_name() == word) next = s;
+    }
+    if (!next) {
+      // "circles help: unknown command `rn`: did you mean `run`?"; "circles help: `circles report` has no command
+      // `x`; `circles help report` lists its commands"
+      std::cerr << "circles help: ";
+      if (names.empty()) {
+        std::cerr << "`" << command_of(*at) << "` has no commands\n";
+        return 2;
+      }
+      const std::string near = nearest(word, names);
+      const std::string help = "circles help" + command_of(*at).substr(std::string("circles").size());
+      std::cerr << (at == &app ? "unknown command `" + word + "`" : "`" + command_of(*at) + "` has no command `" + word + "`")
+                << (near.empty() ? "; `" + help + "` lists " + (at == &app ? "the" : "its") + " commands"
+                                 : ": did you mean `" + near + "`?")
+                << "\n";
+      return 2;
+    }
+    at = next;
+  }
+  std::cout << at->get_formatter()->make_help(at, command_of(*at), CLI::AppFormatMode::Normal);
+  return 0;
+}
+
+// The command parsed, run. A progress line or bar only on a terminal, always on stderr: output to a pipe, a file
+// or CI stays free of it, and stdout holds only what the command says. Every command but conform (whose run
+// loop stops its candidate itself) and serve ends on SIGINT, SIGTERM and SIGHUP as cli/interrupt.hpp says.
+int dispatch(CLI::App& app, Commands& c) {
+  if (*c.help) return help_command(app, c.help_topic);
+  if (*c.families) {
+    print_family_list(circles::properties::parse_profile(c.families_options.profile), std::cout);
+    return 0;
+  }
   if (*c.serve) {
     std::ios::sync_with_stdio(false);  // serve reads and writes only through the C++ streams
     return serve_command(c.serve_options, std::cin, std::cout, std::cerr);
   }
+  if (*c.conform) {
+    note_given(*c.conform, c.conform_options);
+    // --families with nothing after it: the list, as `circles families` prints it.
+    if (c.conform_options.families_given && c.conform_options.families.empty()) {
+      print_family_list(circles::properties::parse_profile(c.conform_options.profile), std::cout);
+      return 0;
+    }
+    if (isatty(STDERR_FILENO)) c.conform_options.progress = &std::cerr;
+    // A report on stdout keeps stdout to itself: the verdict goes to stderr.
+    const ConformCommandOptions& o = c.conform_options;
+    const bool stdout_taken = any_is_standard_output({o.report, o.junit, o.svg, o.write_expect});
+    return conform_command(c.conform_options, stdout_taken ? std::cerr : std::cout, std::cerr);
+  }
+  const CLI::App* command = &app;  // the command parsed, "circles report merge" for one
+  while (!command->get_subcommands().empty()) command = command->get_subcommands().front();
+  end_cleanly_on_interrupt(command_of(*command));
   if (*c.vectors) return vectors_command(c.vectors_options, std::cout, std::cerr);
   if (*c.merge) return merge_command(c.merge_options.out, c.merge_options.reports, std::cout, std::cerr);
   if (*c.check_trace)
     return check_trace_command(c.check_trace_options.file, trace_reference(c.check_trace_options.engine), std::cout,
                                std::cerr);
-  if (*c.conform) {
-    note_given(*c.conform, c.conform_options);
-    if (isatty(STDOUT_FILENO)) c.conform_options.progress = &std::cout;
-    return conform_command(c.conform_options, std::cout, std::cerr);
-  }
   if (*c.run) {
     if (isatty(STDERR_FILENO)) c.run_options.progress = &std::cerr;
     return run_command(c.scene, c.run_options, std::cout, std::cerr);
@@ -127,14 +187,24 @@ int main(int argc, char** argv) {
   std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{"circles: a conformance suite for the circles physics spec.\nWith no command, plain `circles` runs the "
                "main job on the embedded default scene: the exact oracle's report (as `circles oracle`), then every "
-               "engine checked against the oracle step by step; exit 0 when all agree"};
+               "engine checked against the oracle step by step; exit 0 when all agree",
+               "circles"};
+  // Set before the commands are declared, which take them from the program.
+  app.formatter(std::make_shared<HelpFormatter>(help_width()));
+  app.failure_message([](const CLI::App* at, const CLI::Error& e) {
+    const auto* parse_error = dynamic_cast<const CLI::ParseError*>(&e);
+    return (parse_error ? usage_error(*at, *parse_error) : "circles: " + std::string(e.what())) + "\n";
+  });
+  // A flag takes no value: `--fit=abc` is refused by name (usage_error) rather than converted.
+  app.option_defaults()->disable_flag_override();
   app.require_subcommand(0, 1);
-  app.set_version_flag("--version", "circles " CIRCLES_VERSION);
+  app.set_version_flag("-V,--version", "circles " CIRCLES_VERSION);
   Commands commands;
   declare(app, commands);
+  app.footer("`circles help COMMAND` shows the options of a command.");  // after the commands, which would copy it
   if (const std::optional<int> status = parse(app, commands, argc, argv)) return *status;
   try {
-    return dispatch(commands);
+    return dispatch(app, commands);
   } catch (const SceneError& e) {
     std::cerr << "circles: " << e.what() << "\n";
     return 2;

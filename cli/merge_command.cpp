@@ -1,12 +1,11 @@
 #include "cli/merge_command.hpp"
 
 #include "cli/counted.hpp"
+#include "cli/options.hpp"
 #include "cli/report.hpp"  // write_report
 #include "conform/merge.hpp"
+#include "formats/input_file.hpp"
 #include "formats/output_file.hpp"
-
-#include <fstream>
-#include <sstream>
 
 namespace circles::cli {
 
@@ -15,8 +14,11 @@ CLI::App* add_report_command(CLI::App& app, MergeCommandOptions& options) {
   report->require_subcommand(1, 1);
   CLI::App* merge = report->add_subcommand(
       "merge", "Combine the reports of the shards of one run into OUT; exits 0, 1 or 2 as the merged verdict");
-  merge->add_option("out", options.out, "The merged report (written whole or not at all)")->required();
-  merge->add_option("reports", options.reports, "The shards' reports")->required()->check(CLI::ExistingFile);
+  takes(merge->add_option("out", options.out, "The merged report (written whole or not at all), or - for stdout")
+            ->required(),
+        "OUT", "a file to write, or - for stdout");
+  takes(merge->add_option("reports", options.reports, "The shards' reports (- for stdin)")->required(), "REPORT",
+        "report files to read");
   return merge;
 }
 
@@ -24,24 +26,26 @@ int merge_command(const std::string& out, const std::vector<std::string>& report
                   std::ostream& err) {
   std::vector<std::string> texts;
   for (const std::string& file : reports) {
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (!in) {
-      err << "circles report merge: " << file << ": cannot read it\n";
+    try {
+      texts.push_back(formats::read_input(file));
+    } catch (const formats::InputError& e) {
+      err << "circles report merge: " << formats::input_name(file) << ": " << e.what() << "\n";
       return 2;
     }
-    texts.push_back(text.str());
   }
+  std::vector<std::string> names;
+  for (const std::string& file : reports) names.push_back(formats::input_name(file));
   try {
-    const conform::Report merged = conform::merged_report(texts, reports);
+    const conform::Report merged = conform::merged_report(texts, names);
     write_report(out, "report", conform::json_report(merged.verdict, merged.text));
     const conform::Verdict& v = merged.verdict;
-    said << "circles report merge: " << out << ": " << v.candidate << " " << name(v.outcome) << ": "
+    // With the report on stdout, the line goes to stderr, so that stdout holds the report alone.
+    std::ostream& told = formats::is_standard_output(out) ? err : said;
+    told << "circles report merge: " << out << ": " << v.candidate << " " << name(v.outcome) << ": "
          << counted(v.cases, "case") << " of seed " << v.options.seed << " in " << counted(reports.size(), "report");
-    if (v.counterexample && !v.counterexample->replay.empty()) said << "; replay: " << v.counterexample->replay;
-    if (!v.error.empty()) said << "; " << v.error;
-    said << "\n";
+    if (v.counterexample && !v.counterexample->replay.empty()) told << "; replay: " << v.counterexample->replay;
+    if (!v.error.empty()) told << "; " << v.error;
+    told << "\n";
     switch (v.outcome) {
       case conform::Outcome::conforms: return 0;
       case conform::Outcome::does_not_conform: return 1;

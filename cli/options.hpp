@@ -7,8 +7,34 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace circles::cli {
+
+// What an option takes, said once for the help and for the messages: its metavariable (`circles run --help`
+// shows "--steps N") and, in words, the values it takes ("a whole number from 0 to 100"), the description of the
+// option's one check. The check refuses any other value in the circles voice, "--steps: \"x\" is not a whole
+// number from 0 to 100", before CLI11 would try to convert it; a value missing is said with the same words
+// (cli/usage.hpp).
+CLI::Option* takes_whole_number(CLI::Option* option, const std::string& metavariable, std::uint64_t least,
+                                std::uint64_t most);
+CLI::Option* takes_number(CLI::Option* option, const std::string& metavariable, const std::string& wants,
+                          bool (*in_range)(double));
+// Any text, or a file, or a directory: `wants` only says what it is ("a file to write, or - for stdout").
+CLI::Option* takes(CLI::Option* option, const std::string& metavariable, const std::string& wants);
+// DIR: a directory that `wants` describes; "-" is refused, since no stream holds a directory.
+CLI::Option* takes_directory(CLI::Option* option, const std::string& wants);
+CLI::Option* takes_output_file(CLI::Option* option);  // FILE: a file to write, or - for stdout
+CLI::Option* takes_input_file(CLI::Option* option);   // FILE: a file to read, or - for stdin
+// One of `names`, refused otherwise: "--engine: \"fast\" is not double or exact".
+CLI::Option* takes_one_of(CLI::Option* option, const std::string& metavariable, const std::vector<std::string>& names);
+
+// The metavariable and the words of what `option` takes, as the functions above set them: {"N", "a whole
+// number from 0 to 100"}; a flag's are empty.
+struct Takes {
+  std::string metavariable, wants;
+};
+Takes takes_of(const CLI::Option& option);
 
 // --engine NAME, checked against the registry (its message lists the valid names), and --threads T.
 void add_engine_options(CLI::App* command, std::string& engine_name, unsigned& threads);
@@ -28,7 +54,7 @@ struct SceneOptions {
   enum class Source { embedded, file, random };
   // Which of the three the command line chose.
   Source source() const;
-  // How messages name it: "the embedded default scene", the file's path, or "a random scene of 1000 circles
+  // How messages name it: "the embedded default scene", the file's path ("<stdin>" for -), or "a random scene of 1000 circles
   // (coverage 0.1, seed 1)".
   std::string name() const;
 };
@@ -41,15 +67,14 @@ void add_random_options(CLI::App* command, CLI::Option* file, SceneOptions& scen
 // The scene of a command that runs on one (oracle, run) and its steps, in the order --help lists them: the
 // positional scene file, --steps N from 0 to `most` (default: the scene's "steps", else what `steps` holds), and
 // the random scene's options. Returns --steps, whose count() says whether it was given, and whose default
-// main.cpp shows for a scene with "steps". A `most` below 2^64 - 5 also refuses "-5", which CLI11 reads as
-// 2^64 - 5 (strtoull).
+// main.cpp shows for a scene with "steps".
 template <class Count>
 CLI::Option* add_scene_options(CLI::App* command, SceneOptions& scene, Count& steps, Count most) {
   CLI::Option* file = add_scene_file(command, scene);
-  CLI::Option* steps_option =
-      command->add_option("--steps", steps, "Number of steps (default: the scene's \"steps\", else 100)")
-          ->capture_default_str()
-          ->check(CLI::Range(Count{0}, most));
+  CLI::Option* steps_option = takes_whole_number(
+      command->add_option("--steps", steps, "Number of steps; by default the scene's own \"steps\" where it has them")
+          ->capture_default_str(),
+      "N", 0, most);
   add_random_options(command, file, scene);
   return steps_option;
 }

@@ -4,7 +4,8 @@
 #include "spec/oracle.hpp"
 
 #include <iomanip>
-#include <limits>
+#include <charconv>
+#include <string_view>
 
 namespace circles::cli {
 namespace {
@@ -52,7 +53,10 @@ void print_circle(const std::string& label, const Circle& c, std::ostream& out) 
   const auto d = spec::nearest_doubles(c);
   if (spec::circle(spec::exact(d[0]), spec::exact(d[1]), spec::exact(d[2]), spec::exact(d[3]), spec::exact(d[4])) != c) {
     out << "  ≈ (";
-    for (std::size_t j = 0; j < d.size(); ++j) out << (j ? ", " : "") << d[j];
+    for (std::size_t j = 0; j < d.size(); ++j) {
+      char text[32];  // the shortest decimal that reads back as the double: at most 24 characters
+      out << (j ? ", " : "") << std::string_view(text, std::to_chars(text, text + sizeof text, d[j]).ptr);
+    }
     out << ")";
   }
   out << "\n";
@@ -62,7 +66,6 @@ void print_circle(const std::string& label, const Circle& c, std::ostream& out) 
 
 void report_oracle(const std::vector<Circle>& scene, const std::string& scene_name, std::size_t steps,
                    std::ostream& out) {
-  out << std::setprecision(std::numeric_limits<double>::max_digits10);
   out << "circles: the exact oracle on " << scene_name << " (" << counted(scene.size(), "circle") << ", "
       << counted(steps, "step") << " of Δt = 1/60)\n"
       << "This part runs the oracle alone, in exact rationals; the main job (`circles` with no subcommand) then\n"

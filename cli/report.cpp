@@ -1,5 +1,6 @@
 #include "cli/report.hpp"
 
+#include "cli/counted.hpp"
 #include "formats/output_file.hpp"
 
 namespace circles::cli {
@@ -63,7 +64,7 @@ std::string junit_report(const Verdict& v, const std::string& text) {
       ++skipped;
       cases += "      <skipped message=\"not reached: the run stopped at its counterexample\"/>\n";
     }
-    cases += "      <system-out>" + std::to_string(f.checked) + " cases checked</system-out>\n    </testcase>\n";
+    cases += "      <system-out>" + counted(f.checked, "case") + " checked</system-out>\n    </testcase>\n";
   }
   const conform::Options& o = v.options;
   const std::string counts = "tests=\"" + std::to_string(v.families.size()) + "\" failures=\"" + std::to_string(failures) +

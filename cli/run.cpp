@@ -1,5 +1,7 @@
 #include "cli/run.hpp"
 
+#include "cli/counted.hpp"
+
 #include "formats/json_number.hpp"
 #include "formats/trace_writer.hpp"
 #include "pictures/progress.hpp"
@@ -156,41 +158,53 @@ std::string threads_text(const RunOptions& options) {
 // The last multiple of `every` up to `steps`: the step of the last frame.
 std::uint64_t last_frame(std::uint64_t steps, std::uint64_t every) { return steps / every * every; }
 
-// A figure of --stats to 3 significant digits: "6.67", "0.006", "2e-06", "0"; from 1000 up, a whole number
-// rounded to 3 digits ("1230") rather than "1.23e+03".
+// A figure of the summary and --stats to 3 significant digits, in plain decimals: "6.67", "0.006",
+// "0.0000565", "0"; from 1000 up, a whole number rounded to 3 digits ("1230") rather than "1.23e+03".
 std::string figure(double x) {
   std::ostringstream o;
-  if (std::fabs(x) >= 1000 && std::isfinite(x)) {
-    const double unit = std::pow(10.0, std::floor(std::log10(std::fabs(x))) - 2);
-    o << std::fixed << std::setprecision(0) << std::round(x / unit) * unit;
-  } else {
-    o << std::setprecision(3) << x;
+  if (!std::isfinite(x) || x == 0) {
+    o << x;
+    return o.str();
   }
-  return o.str();
+  const int magnitude = static_cast<int>(std::floor(std::log10(std::fabs(x))));
+  if (magnitude >= 3) {
+    const double unit = std::pow(10.0, magnitude - 2);
+    o << std::fixed << std::setprecision(0) << std::round(x / unit) * unit;
+    return o.str();
+  }
+  o << std::fixed << std::setprecision(2 - magnitude) << x;
+  std::string text = o.str();
+  if (text.find('.') != std::string::npos) {  // zeros closing the decimals say nothing: "0.006", not "0.00600"
+    text.erase(text.find_last_not_of('0') + 1);
+    if (text.back() == '.') text.pop_back();
+  }
+  return text;
 }
 
 }  // namespace
 
 void print_summary(const RunResult& result, std::size_t circles, const RunOptions& options, std::ostream& out) {
-  out << result.steps << " steps of " << circles << " circles with the " << options.engine->name << " engine ("
-      << threads_text(options) << "): " << result.stepping.count() << " s stepping";
+  out << counted(result.steps, "step") << " of " << counted(circles, "circle") << " with the " << options.engine->name
+      << " engine (" << threads_text(options) << "): " << figure(result.stepping.count()) << " s stepping";
   const double circle_steps = static_cast<double>(result.steps) * static_cast<double>(circles);
-  if (circle_steps > 0) out << ", " << result.stepping.count() * 1e9 / circle_steps << " ns per circle-step";
+  if (circle_steps > 0) out << ", " << figure(result.stepping.count() * 1e9 / circle_steps) << " ns per circle-step";
   out << "\n";
   if (!options.trace.empty())
-    out << "trace: " << options.trace << " (w_0 to w_" << result.steps << ", " << result.steps + 1 << " lines)\n";
+    out << "trace: " << output_name(options.trace) << " (w_0 to w_" << result.steps << ", "
+        << counted(result.steps + 1, "line") << ")\n";
   if (!options.exact_trace.empty())
-    out << "exact trace: " << options.exact_trace << " (w_0 to w_" << result.steps << ", " << result.steps + 1
-        << " lines, as rationals)\n";
+    out << "exact trace: " << output_name(options.exact_trace) << " (w_0 to w_" << result.steps << ", "
+        << counted(result.steps + 1, "line") << ", as rationals)\n";
   const std::uint64_t every = std::max<std::uint64_t>(options.every, 1);
   if (!options.render.empty()) {
-    out << "frames: " << frame_path(options.render, 0) << " to "
-        << frame_path(options.render, last_frame(result.steps, every)) << " ("
-        << result.frames << ", every " << every << (every == 1 ? " step" : " steps") << ")\n";
+    out << "frames: ";
+    if (options.render == "-") out << "standard output, one PNG after another";
+    else out << frame_path(options.render, 0) << " to " << frame_path(options.render, last_frame(result.steps, every));
+    out << " (" << result.frames << ", every " << counted(every, "step") << ")\n";
   }
   if (!options.video.empty())
-    out << "video: " << options.video << " (" << result.frames << " frames at " << kVideoFrameRate << " frames/s, "
-        << static_cast<double>(result.frames) / kVideoFrameRate << " s)\n";
+    out << "video: " << output_name(options.video) << " (" << counted(result.frames, "frame") << " at "
+        << kVideoFrameRate << " frames/s, " << figure(static_cast<double>(result.frames) / kVideoFrameRate) << " s)\n";
 }
 
 void print_work(const impl::EngineStats& work, std::size_t circles, std::ostream& out) {
@@ -255,7 +269,7 @@ void print_comparison(const EngineEntry& engine, const Comparison& c, std::ostre
     out << "DIFFERS from " << oracle << " at " << *c.difference << "\n";
     return;
   }
-  out << "agrees with " << oracle << " at each of the " << c.steps << " steps";
+  out << "agrees with " << oracle << (c.steps == 1 ? " at its one step" : " at each of the " + counted(c.steps, "step"));
   if (c.overflow) out << ", after which both stop: " << c.overflow->what();
   out << "\n";
 }

@@ -72,7 +72,7 @@ RunResult run(Circles world, const RunOptions& options);
 
 // "100 steps of 10 circles with the double engine (all cores): 0.000135 s stepping, 135 ns per circle-step",
 // then a line for each output: "trace: t.jsonl (w_0 to w_100, 101 lines)", "frames: f/frame-000000.png to
-// f/frame-000099.png (34, every 3 steps)", "video: v.mp4 (34 frames at 60 frames/s, 0.566667 s)".
+// f/frame-000099.png (34, every 3 steps)", "video: v.mp4 (34 frames at 60 frames/s, 0.567 s)"; figures to 3 significant digits in plain decimals.
 void print_summary(const RunResult& result, std::size_t circles, const RunOptions& options, std::ostream& out);
 
 // The lines of --stats about the engine's work: lists built, pairs tested, contacts, steps and circle-steps

@@ -1,5 +1,6 @@
 #include "cli/run_command.hpp"
 
+#include "cli/counted.hpp"
 #include "cli/run.hpp"
 #include "formats/scene.hpp"
 
@@ -29,7 +30,7 @@ SceneWorld world_of(const SceneOptions& scene, const engines::EngineEntry& engin
 
 // After an overflow: where it stopped, and what each output holds.
 void print_overflow(const RunResult& result, const RunCommandOptions& given, std::ostream& err) {
-  err << "circles run: " << result.overflow->what() << "; stopped after " << result.steps << " steps";
+  err << "circles run: " << result.overflow->what() << "; stopped after " << counted(result.steps, "step");
   if (!given.trace.empty()) err << ", and the trace " << given.trace << " holds w_0 to w_" << result.steps;
   if (!given.exact_trace.empty()) err << ", and the exact trace " << given.exact_trace << " w_0 to w_" << result.steps;
   if (!given.render.empty() || !given.video.empty())
@@ -42,22 +43,28 @@ void print_overflow(const RunResult& result, const RunCommandOptions& given, std
 
 CLI::App* add_run_command(CLI::App& app, SceneOptions& scene, RunCommandOptions& options) {
   CLI::App* run = app.add_subcommand(
-      "run", "Run an engine on a scene, optionally writing a JSON Lines trace, PNG frames or a video (docs/run.md)");
+      "run",
+      "Run an engine on a scene, optionally writing a JSON Lines trace, PNG frames or a video (see run.md in the docs)");
   // Up to 2^63 - 1, as a scene's "steps".
   options.steps_option = add_scene_options(run, scene, options.steps, kMaxSceneSteps);
   add_engine_options(run, options.engine, options.threads);
-  run->add_option("--trace", options.trace,
-                  "Write every world to this file, one JSON line {\"step\": t, \"circles\": [...]} each");
-  run->add_option("--exact-trace", options.exact_trace,
-                  "With --engine exact: write every world's exact state to this file, the lines of --trace with "
-                  "each number the rational \"n/d\"");
-  run->add_option("--render", options.render,
-                  "Draw frames as 1280x720 PNGs DIR/frame-000000.png, ... (DIR created if missing)");
-  options.every_option =
-      run->add_option("--every", options.every, "A frame every K steps: w_0, w_K, w_2K, ... (for --render and --video)")
-          ->capture_default_str()
-          ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{std::numeric_limits<std::int64_t>::max()}));
-  run->add_option("--video", options.video, "Pipe the frames to ffmpeg for an H.264 video FILE.mp4 at 60 frames/s");
+  takes_output_file(run->add_option("--trace", options.trace,
+                                    "Write every world to FILE, one JSON line {\"step\": t, \"circles\": [...]} each"));
+  takes_output_file(run->add_option("--exact-trace", options.exact_trace,
+                                    "With --engine exact: write every world's exact state to FILE, the lines of --trace "
+                                    "with each number the rational \"n/d\""));
+  takes(run->add_option("--render", options.render,
+                        "Draw frames as 1280x720 PNGs DIR/frame-000000.png, ... (DIR created if missing; - for "
+                        "stdout, one PNG after another)"),
+        "DIR", "a directory for the frames, or - for stdout");
+  options.every_option = takes_whole_number(
+      run->add_option("--every", options.every, "A frame every N steps: w_0, w_N, w_2N, ... (for --render and --video)")
+          ->capture_default_str(),
+      "N", 1, std::numeric_limits<std::int64_t>::max());
+  takes(run->add_option("--video", options.video,
+                        "Pipe the frames to ffmpeg for an H.264 video FILE.mp4 at 60 frames/s (- for stdout, a "
+                        "fragmented MP4)"),
+        "FILE", "a file.mp4 to write, or - for stdout");
   run->add_flag("--fit", options.fit,
                 "Scale and centre the frames to hold every circle of every frame (default: 1 unit = 1 pixel)");
   run->add_flag("--stats", options.stats,
@@ -94,9 +101,11 @@ int run_command(const SceneOptions& scene, const RunCommandOptions& given, std::
     err << "circles run: " << e.what() << "\n";
     return 2;
   }
-  out << "circles run: " << scene.name() << ": ";
-  print_summary(result, circle_count, options, out);
-  if (given.stats) print_stats(result, circle_count, options, out);
+  // An output on stdout keeps stdout to itself: the summary goes to stderr.
+  std::ostream& said = any_is_standard_output({given.trace, given.exact_trace, given.render, given.video}) ? err : out;
+  said << "circles run: " << scene.name() << ": ";
+  print_summary(result, circle_count, options, said);
+  if (given.stats) print_stats(result, circle_count, options, said);
   if (!result.overflow) return 0;
   print_overflow(result, given, err);
   return 2;

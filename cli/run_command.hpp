@@ -29,7 +29,8 @@ struct RunCommandOptions {
 // Declares the command and its options on `app`; the scene's options go to `scene`.
 CLI::App* add_run_command(CLI::App& app, SceneOptions& scene, RunCommandOptions& options);
 
-// The command: the run's summary (and with --stats its figures) on `out`, 0; or 2 with the reason on `err` for
+// The command: the run's summary (and with --stats its figures) on `out`, or on `err` when an output goes to
+// stdout ("-", /dev/stdout), 0; or 2 with the reason on `err` for
 // options that do not go together, or a run stopped by an overflow (what its outputs hold then). Throws
 // SceneError for a scene that cannot be read, and OutputError or VideoError for an output that cannot be written.
 int run_command(const SceneOptions& scene, const RunCommandOptions& options, std::ostream& out, std::ostream& err);

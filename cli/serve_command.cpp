@@ -8,7 +8,7 @@ namespace circles::cli {
 
 CLI::App* add_serve_command(CLI::App& app, ServeCommandOptions& options) {
   CLI::App* serve = app.add_subcommand(
-      "serve", "Answer step-protocol requests on stdin, one JSON line each, on stdout (docs/protocol.md)");
+      "serve", "Answer step-protocol requests on stdin, one JSON line each, on stdout (see protocol.md in the docs)");
   add_engine_options(serve, options.engine, options.threads);
   return serve;
 }

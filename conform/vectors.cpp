@@ -68,10 +68,11 @@ VectorsSummary write_vectors(const VectorsOptions& options) {
   // The inputs and the output directory first, so that a wrong --scenes or --out is reported before any work
   // and a missing scenes directory leaves no output directory behind.
   const std::vector<fs::path> scenes = scene_files(options.scenes);
+  const bool to_stdout = options.out == "-";
   std::error_code error;
-  if (fs::exists(options.out, error) && !fs::is_directory(options.out, error))
+  if (!to_stdout && fs::exists(options.out, error) && !fs::is_directory(options.out, error))
     throw VectorsError(options.out + ": cannot create the output directory: a file of that name is in the way");
-  fs::create_directories(options.out, error);
+  if (!to_stdout) fs::create_directories(options.out, error);
   if (error) throw VectorsError(options.out + ": cannot create the output directory: " + error.message());
 
   std::vector<Vector> vectors;
@@ -98,7 +99,10 @@ VectorsSummary write_vectors(const VectorsOptions& options) {
   const std::vector<Circles> worlds = case_worlds(options.seed, options.cases);
   const auto families = properties::families(properties::Profile::resolved);
   for (std::uint64_t c = 0; c < worlds.size(); ++c) {
-    if (properties::is_big(families[c % families.size()])) continue;
+    if (properties::is_big(families[c % families.size()])) {
+      ++summary.big;
+      continue;
+    }
     std::optional<Vector> v = make_vector(worlds[c]);
     if (!v) {
       ++summary.skipped;
@@ -114,7 +118,7 @@ VectorsSummary write_vectors(const VectorsOptions& options) {
     content += formats::format_vector(i, vectors[i]) + '\n';
     for (const std::string& f : vectors[i].features) ++summary.features[f];
   }
-  summary.file = (fs::path(options.out) / kVectorsFile).string();
+  summary.file = to_stdout ? options.out : (fs::path(options.out) / kVectorsFile).string();
   try {  // beside its place and renamed into it: DIR never holds a half-written file
     formats::write_file(summary.file, summary.file, content);
   } catch (const formats::OutputError& e) {

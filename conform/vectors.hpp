@@ -30,7 +30,7 @@ class VectorsError : public std::runtime_error {
 };
 
 struct VectorsOptions {
-  std::string out;                // the directory of vectors.jsonl, created if missing
+  std::string out;                // the directory of vectors.jsonl, created if missing; "-": the vectors on stdout
   std::uint64_t cases = 200;      // generated cases: conform's cases 0 … cases − 1 of `seed`
   std::uint64_t seed = 1;
   std::string scenes = "scenes";  // every *.json file in it, in name order
@@ -50,11 +50,12 @@ std::optional<Vector> make_vector(const Circles& input);
 std::vector<std::string> features_of(const Circles& w);
 
 struct VectorsSummary {
-  std::string file;                  // DIR/vectors.jsonl
+  std::string file;                  // DIR/vectors.jsonl, or "-"
   std::size_t written = 0;           // cases in the file
   std::size_t scenes = 0;            // scene files read
   std::size_t scene_cases = 0;       // cases from them
   std::size_t skipped = 0;           // worlds whose next world leaves the double range, not written
+  std::size_t big = 0;               // generated cases of the big families, left out (conform checks them)
   std::map<std::string, std::size_t> features;  // feature → cases that exercise it
 };
 

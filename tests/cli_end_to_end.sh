@@ -167,6 +167,20 @@ main_job_exits_0_with_every_engine_in_agreement)
   "$circles" >"$dir/out"
   grep -qx 'double engine: agrees with the correctly rounded oracle at each of the 100 steps' "$dir/out" ||
     fail "no agreement line: $(tail -n 3 "$dir/out")"
+  # The nearest doubles in their shortest round-trip form: 88.33333333333333, not 17 digits (88.333333333333329).
+  grep -qxF '    9  (3305/3, 265/3, 1, -7, 5)  ≈ (1101.6666666666667, 88.33333333333333, 1, -7, 5)' "$dir/out" ||
+    fail "circle 9's doubles: $(grep '^    9 ' "$dir/out")"
+  # One step, said in the singular, and times in plain decimals (no "5.6454e-05 s").
+  "$circles" run --steps 1 --trace "$dir/t.jsonl" >"$dir/out"
+  grep -Eqx 'circles run: the embedded default scene: 1 step of 10 circles with the double engine \(all cores\): 0\.[0-9]+ s stepping, [0-9.]+ ns per circle-step' "$dir/out" ||
+    fail "run's summary of one step: $(cat "$dir/out")"
+  "$circles" check-trace "$dir/t.jsonl" >"$dir/out"
+  grep -q "^circles check-trace: $dir/t.jsonl: agrees with the correctly rounded step at its one step (steps 0 to 1, 10 circles)" "$dir/out" ||
+    fail "check-trace of one step: $(cat "$dir/out")"
+  printf '{"step": 0, "circles": [[0, 0, 0, 0, 1]]}\n{"step": 1, "circles": [[0, 0, 0, 0, 1]]}\n' >"$dir/one.jsonl"
+  "$circles" check-trace "$dir/one.jsonl" >"$dir/out"
+  grep -q "^circles check-trace: $dir/one.jsonl: agrees with the correctly rounded step at its one step (steps 0 to 1, 1 circle)" "$dir/out" ||
+    fail "check-trace of one circle: $(cat "$dir/out")"
   ;;
 usage_errors_name_the_command_and_suggest_the_nearest_name)
   # usage LINE ARGS...: `circles ARGS` exits 2 with the one line LINE on stderr and nothing on stdout.
@@ -183,7 +197,66 @@ usage_errors_name_the_command_and_suggest_the_nearest_name)
   usage 'circles conform: unknown option `--step`: did you mean `--steps`?' conform --step 3
   usage 'circles conform: unknown option `--frobnicate`; `circles conform --help` lists the options' conform --frobnicate
   usage 'circles conform: unexpected argument `extra`; `circles conform --help` lists what it takes' conform extra
-  usage 'circles run: --steps: Value x not in range 0 to 9223372036854775807' run --steps x
+  # Every kind of error the parser raises, said in the circles voice: the command, the option or argument, and
+  # what it takes (no CLI11 wording: "Could not convert", "required UINT missing", "is required", "not expected").
+  usage 'circles run: --steps: "x" is not a whole number from 0 to 9223372036854775807' run --steps x
+  usage 'circles conform: --seed: "abc" is not a whole number from 0 to 18446744073709551615' conform --seed abc
+  usage 'circles conform: --seed needs a value: N, a whole number from 0 to 18446744073709551615' conform --seed
+  usage 'circles conform: --timeout: "0" is not a number from 0.001 to 3600' conform --timeout 0
+  usage 'circles run: --coverage: "2" is not a number in (0, 1]' run --random 5 --coverage 2
+  usage 'circles check-trace: TRACE is missing: a trace file to read, or - for stdin' check-trace
+  usage 'circles check-trace: --engine: "fast" is not double or exact' check-trace t.jsonl --engine fast
+  usage 'circles vectors: --out is missing: DIR, a directory for vectors.jsonl, or - for stdout' vectors
+  usage 'circles report: COMMAND is missing: merge' report
+  usage 'circles report merge: REPORT is missing: report files to read' report merge out.json
+  usage 'circles: unknown command `foo`; `circles --help` lists the commands' foo conform
+  usage 'circles run: --coverage goes with --random, which is not given' run --coverage 0.5
+  usage 'circles run: SCENE and --random exclude each other: give one' run scene.json --random 3
+  usage 'circles conform: --families and --skip-families exclude each other: give one' conform --families a --skip-families b
+  usage 'circles run: --fit takes no value: give it alone' run --fit=yes
+  usage 'circles run: --steps is given 2 times: give it once' run --steps 1 --steps 2
+  usage 'circles run: --trace needs a value: FILE, a file to write, or - for stdout' run --trace
+  usage 'circles help: unknown command `rn`: did you mean `run`?' help rn
+  usage 'circles help: `circles report` has no command `x`; `circles help report` lists its commands' help report x
+  ;;
+help_wraps_at_the_terminal_width_and_names_what_each_option_takes)
+  # `circles help COMMAND` is `circles COMMAND --help`; -V is --version.
+  for command in "" run conform "report merge" vectors check-trace oracle serve families; do
+    # shellcheck disable=SC2086
+    "$circles" $command --help >"$dir/flag"
+    # shellcheck disable=SC2086
+    "$circles" help $command >"$dir/help"
+    cmp "$dir/flag" "$dir/help" || fail "circles help $command differs from circles $command --help"
+    # shellcheck disable=SC2086
+    COLUMNS=60 "$circles" $command --help >"$dir/narrow"
+    # No line beyond the width (in characters: the help is ASCII), none of CLI11's type names, no path into the
+    # repository for a doc, which an installed program's user does not have.
+    [ -z "$(LC_ALL=C awk 'length > 60' "$dir/narrow")" ] || fail "circles $command --help beyond 60 columns: $(LC_ALL=C awk 'length > 60' "$dir/narrow")"
+    ! LC_ALL=C grep -q '[^ -~]' "$dir/narrow" || fail "circles $command --help is not ASCII"
+    ! grep -Eq 'TEXT|UINT|FLOAT|INT\b|docs/' "$dir/narrow" || fail "circles $command --help: $(grep -E 'TEXT|UINT|FLOAT|INT\b|docs/' "$dir/narrow")"
+  done
+  "$circles" run --help >"$dir/out"
+  for option in "--steps N" "--trace FILE" "--exact-trace FILE" "--render DIR" "--video FILE" "--every N" "--seed N"; do
+    grep -q "^  $option " "$dir/out" || fail "run --help has no $option: $(cat "$dir/out")"
+  done
+  grep -q '^  SCENE ' "$dir/out" && grep -q '^Usage: circles run \[OPTIONS\] \[SCENE\]$' "$dir/out" || fail "run --help: $(cat "$dir/out")"
+  COLUMNS=200 "$circles" run --help >"$dir/wide"
+  [ "$(wc -l <"$dir/wide")" -lt "$(wc -l <"$dir/out")" ] || fail "run --help is no shorter at 200 columns"
+  [ "$("$circles" -V)" = "$("$circles" --version)" ] || fail "-V: $("$circles" -V)"
+  ;;
+families_lists_the_families_of_each_profile)
+  "$circles" families >"$dir/resolved"
+  "$circles" conform --families >"$dir/conform"
+  cmp "$dir/resolved" "$dir/conform" || fail "conform --families lists other families: $(cat "$dir/conform")"
+  [ "$(wc -l <"$dir/resolved")" -eq 25 ] && [ "$(head -n 1 "$dir/resolved")" = lattice ] &&
+    [ "$(grep -c ' (big)$' "$dir/resolved")" -eq 8 ] && grep -qx 'sizes (big)' "$dir/resolved" ||
+    fail "circles families: $(cat "$dir/resolved")"
+  "$circles" families --profile literal >"$dir/literal"
+  [ "$(wc -l <"$dir/literal")" -eq 15 ] && ! grep -q 'duplicates\|zero-radius\|(big)' "$dir/literal" ||
+    fail "circles families --profile literal: $(cat "$dir/literal")"
+  # Each name listed is one --families takes.
+  "$circles" conform --engine double --cases 25 --families "$(tr '\n' , <"$dir/literal" | sed 's/,$//')" --profile literal \
+    >/dev/null || fail "conform does not take the families listed"
   ;;
 version_and_help_say_what_the_program_is)
   # --version: project()'s version, and the commit of a build from git.
@@ -192,17 +265,17 @@ version_and_help_say_what_the_program_is)
     fail "--version: $(cat "$dir/out")"
   # --help says what plain `circles` does.
   "$circles" --help >"$dir/out"
-  grep -q '^With no command, plain `circles` runs the main job on the embedded default scene' "$dir/out" ||
+  grep -q '^With no command, plain `circles` runs the main job' "$dir/out" ||
     fail "--help: $(cat "$dir/out")"
   # run --help shows the scene's own "steps" as the default of --steps: 1200 for the cradle, 100 for the
   # default scene, which has none.
   printf '{"steps": 1200, "circles": [[0, 0, 0, 0, 1]]}' >"$dir/scene.json"
   "$circles" run "$dir/scene.json" --help >"$dir/out"
-  grep -q '^  --steps .*=1200$' "$dir/out" || fail "run SCENE --help: $(cat "$dir/out")"
+  grep -q '(default: 1200)$' "$dir/out" || fail "run SCENE --help: $(cat "$dir/out")"
   "$circles" oracle "$dir/scene.json" --help >"$dir/out"
-  grep -q '^  --steps .*=1200$' "$dir/out" || fail "oracle SCENE --help: $(cat "$dir/out")"
+  grep -q '(default: 1200)$' "$dir/out" || fail "oracle SCENE --help: $(cat "$dir/out")"
   "$circles" run --help >"$dir/out"
-  grep -q '^  --steps .*=100$' "$dir/out" || fail "run --help: $(cat "$dir/out")"
+  sed -n '/^  --steps N /,/^  --[a-z]/p' "$dir/out" | grep -q '(default: 100)$' || fail "run --help: $(cat "$dir/out")"
   ;;
 *)
   fail "no case $case_name"

@@ -215,12 +215,21 @@ TEST(run, summarizes_steps_circles_engine_threads_and_time) {
     return out.str();
   };
   EXPECT_EQ(summary("double", 0, "t.jsonl"),
-            "4 steps of 5 circles with the double engine (all cores): 2e-06 s stepping, 100 ns per circle-step\n"
+            "4 steps of 5 circles with the double engine (all cores): 0.000002 s stepping, 100 ns per circle-step\n"
             "trace: t.jsonl (w_0 to w_4, 5 lines)\n");
   EXPECT_EQ(summary("double", 3, ""),
-            "4 steps of 5 circles with the double engine (3 threads): 2e-06 s stepping, 100 ns per circle-step\n");
+            "4 steps of 5 circles with the double engine (3 threads): 0.000002 s stepping, 100 ns per circle-step\n");
   EXPECT_EQ(summary("oracle", 0, ""),
-            "4 steps of 5 circles with the oracle engine (1 thread): 2e-06 s stepping, 100 ns per circle-step\n");
+            "4 steps of 5 circles with the oracle engine (1 thread): 0.000002 s stepping, 100 ns per circle-step\n");
+  // Times to 3 significant digits in plain decimals, never "5.6454e-05 s" or 6 digits; one step and one circle in
+  // the singular; "-" named as stdout.
+  result.steps = 1;
+  result.stepping = std::chrono::duration<double>(5.6454e-05);
+  std::ostringstream one;
+  print_summary(result, 1, RunOptions{1, &engine("double"), 1, "-"}, one);
+  EXPECT_EQ(one.str(),
+            "1 step of 1 circle with the double engine (1 thread): 0.0000565 s stepping, 56500 ns per circle-step\n"
+            "trace: standard output (w_0 to w_1, 2 lines)\n");
 }
 
 // --every 3 over 10 steps: frames of w_0, w_3, w_6, w_9, the last at step 9; 4 frames at 60 a second last 1/15 s.
@@ -237,7 +246,7 @@ TEST(run, summarizes_the_frames_and_the_video) {
   EXPECT_EQ(out.str(),
             "10 steps of 5 circles with the double engine (1 thread): 0 s stepping, 0 ns per circle-step\n"
             "frames: out/frame-000000.png to out/frame-000009.png (4, every 3 steps)\n"
-            "video: v.mp4 (4 frames at 60 frames/s, 0.0666667 s)\n");
+            "video: v.mp4 (4 frames at 60 frames/s, 0.0667 s)\n");
 }
 
 // 2e-6 s over 4 steps of 5 circles is 100 ns per circle-step; 3 frames in 0.006 s of drawing are 2 ms each.
@@ -260,7 +269,7 @@ TEST(run, prints_stats_one_figure_a_line_leaving_out_what_does_not_apply) {
   };
   RunOptions options{4, &engine("double"), 3, ""};
   EXPECT_EQ(stats(options),
-            "steps: 4\ncircles: 5\nengine: double\nthreads: 3\nstepping: 2e-06 s\nns per circle-step: 100\n"
+            "steps: 4\ncircles: 5\nengine: double\nthreads: 3\nstepping: 0.000002 s\nns per circle-step: 100\n"
             "total: 2 s\n");
   options.engine = &engine("oracle");
   options.trace = "t.jsonl";
@@ -268,8 +277,8 @@ TEST(run, prints_stats_one_figure_a_line_leaving_out_what_does_not_apply) {
   options.video = "v.mp4";
   options.fit = true;
   EXPECT_EQ(stats(options),
-            "steps: 4\ncircles: 5\nengine: oracle\nthreads: 1 (the oracle engine has none)\nstepping: 2e-06 s\n"
-            "ns per circle-step: 100\nfit pass: 1e-06 s\nframes: 3\ndrawing: 0.006 s (2 ms per frame)\n"
+            "steps: 4\ncircles: 5\nengine: oracle\nthreads: 1 (the oracle engine has none)\nstepping: 0.000002 s\n"
+            "ns per circle-step: 100\nfit pass: 0.000001 s\nframes: 3\ndrawing: 0.006 s (2 ms per frame)\n"
             "png: 0.012 s (4 ms per frame)\nvideo: 0.003 s (1 ms per frame)\n"
             "trace: 0.5 s (209000000 bytes, 418 MB/s)\ntotal: 2 s\n");
   options.engine = &engine("double");
@@ -279,7 +288,7 @@ TEST(run, prints_stats_one_figure_a_line_leaving_out_what_does_not_apply) {
                                   " (all cores)\n") != std::string::npos);
   result.steps = 0;
   EXPECT_EQ(stats(RunOptions{0, &engine("exact"), 2, ""}),
-            "steps: 0\ncircles: 5\nengine: exact\nthreads: 2\nstepping: 2e-06 s\ntotal: 2 s\n");
+            "steps: 0\ncircles: 5\nengine: exact\nthreads: 2\nstepping: 0.000002 s\ntotal: 2 s\n");
 }
 
 // 4 steps of 5 circles (20 circle-steps): 2 lists built, one per 2 steps; 30 pairs tested, 1.5 per
@@ -294,7 +303,7 @@ TEST(run, prints_what_the_engine_did_and_skipped_after_the_time_per_circle_step)
   std::ostringstream out;
   print_stats(result, 5, RunOptions{4, &engine("double"), 1, ""}, out);
   EXPECT_EQ(out.str(),
-            "steps: 4\ncircles: 5\nengine: double\nthreads: 1\nstepping: 2e-06 s\nns per circle-step: 100\n"
+            "steps: 4\ncircles: 5\nengine: double\nthreads: 1\nstepping: 0.000002 s\nns per circle-step: 100\n"
             "pair lists built: 2 (keys, re-sort and broad phase; one per 2 steps)\n"
             "pairs tested: 30 (1.5 per circle-step)\n"
             "pairs in contact: 3 (10%)\n"

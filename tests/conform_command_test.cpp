@@ -88,9 +88,10 @@ TEST(ConformCommand, threads_with_a_program_exit_2_as_the_program_runs_its_own) 
 
 TEST(ConformCommand, the_default_engine_not_given_does_not_exclude_a_program) {
   // engine holds its default "double", as the program's option does, but was not given: the program is checked,
-  // and found broken at its first request (it exits without answering), which is a verdict that cannot check.
+  // and found broken at its first request (it exits without answering), which is a verdict that cannot check:
+  // the message says the seed the run used, so that a run with a random one can be run again.
   expect_exit_2(silent_program(),
-                 "circles conform: the program `true` exited with status 0 before answering request 1\n");
+                 "circles conform: the program `true` exited with status 0 before answering request 1 (seed 2)\n");
 }
 
 TEST(ConformCommand, a_bad_level_profile_or_shard_names_the_option_and_the_value) {

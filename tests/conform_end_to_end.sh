@@ -72,7 +72,7 @@ exits_2_naming_an_unknown_profile)
 exits_2_when_too_few_cases_reach_every_family)
   run_conform 2 --cases 5 --seed 1
   [ "$(cat "$dir/err")" = "circles conform: no case of the family tie-p was checked: each round of 25 cases \
-draws every family of the resolved profile once, and this run checked 5; raise --cases to at least 25" ] ||
+draws every family of the resolved profile once, and this run checked 5; raise --cases to at least 25 (seed 1)" ] ||
     fail "unexpected message: $(cat "$dir/err")"
   ;;
 saves_a_counterexample_and_replays_it_first)
@@ -166,9 +166,9 @@ exits_2_for_a_count_beyond_2_63_or_threads_with_a_program)
   # CLI11 reads "-1" as 2^64 - 1: as --cases it would run for ever, as --case check nothing (I + 1 wraps) and
   # conform. And --threads is an engine's: a program given with --exec runs its own.
   run_conform 2 --cases -1 --engine double
-  grep -q "^circles conform: --cases: Value -1 not in range 0 to 9223372036854775807$" "$dir/err" || fail "$(cat "$dir/err")"
+  grep -q '^circles conform: --cases: "-1" is not a whole number from 0 to 9223372036854775807$' "$dir/err" || fail "$(cat "$dir/err")"
   run_conform 2 --case 18446744073709551615 --engine double
-  grep -q "^circles conform: --case: Value 18446744073709551615 not in range 0 to 9223372036854775807$" "$dir/err" || fail "$(cat "$dir/err")"
+  grep -q '^circles conform: --case: "18446744073709551615" is not a whole number from 0 to 9223372036854775807$' "$dir/err" || fail "$(cat "$dir/err")"
   run_conform 2 --threads 2 --exec "python3 $source_dir/examples/python/step.py"
   [ "$(cat "$dir/err")" = "circles conform: --threads sets the threads of an --engine; a program given with --exec runs its own" ] ||
     fail "unexpected message: $(cat "$dir/err")"
@@ -193,7 +193,11 @@ keeps_going_and_gates_on_an_expectation_file)
     fail "not a replay line per failure: $(cat "$dir/out")"
   # With the file it wrote, the naive example passes the gate.
   run_conform 0 --cases 1000 --seed 1 --exec "$naive" --expect "$dir/naive.expect"
-  grep -q "^  families: 22 expected failure, 3 passed$" "$dir/out" || fail "no expected failures: $(cat "$dir/out")"
+  grep -q "^  families: 22 expected failures, 3 passed$" "$dir/out" || fail "no expected failures: $(cat "$dir/out")"
+  # A run that passes only through its expectation file says so, and never that the program conforms.
+  grep -q "^circles conform: the program \`$naive\` passes with 22 expected failures, 3 families pass: [0-9]* cases, " "$dir/out" ||
+    fail "the first line does not say what passed: $(head -n 1 "$dir/out")"
+  ! grep -q "conforms" "$dir/out" || fail "a run with expected failures says it conforms: $(head -n 1 "$dir/out")"
   # The exact example, with the same file: an unexpected pass for each line.
   run_conform 1 --cases 1000 --seed 1 --exec "python3 $source_dir/examples/python/step.py" --expect "$dir/naive.expect"
   [ "$(grep -c ": unexpected pass (.* cases checked): delete its line, $dir/naive.expect:" "$dir/out")" -eq 22 ] ||

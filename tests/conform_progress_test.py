@@ -1,5 +1,6 @@
-"""`circles conform` on a terminal shows a progress line once the run has taken 2 s, and erases it before the
-verdict; with stdout a pipe it prints the verdict alone. The terminal is a pseudo-terminal (pty).
+"""`circles conform` with stderr a terminal shows a progress line there once the run has taken 2 s, and erases it
+before the verdict; stdout never holds it, and with stderr a pipe there is none. The terminal is a pseudo-terminal
+(pty).
 
     conform_progress_test.py PATH/TO/circles SOURCE_DIR
 """
@@ -18,9 +19,11 @@ command = [circles, "conform", "--seed", "1", "--cases", "25000", "--keep-going"
            "tangency,tangent-after-step,signed-zeros", "--exec", naive]
 
 
-def on_a_terminal():
+def on_a_terminal(stdout_too=True):
+    """The exit status and what reached the terminal (stderr, and stdout too or else a pipe's bytes after it)."""
     leader, follower = pty.openpty()
-    run = subprocess.Popen(command, stdout=follower, stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL)
+    run = subprocess.Popen(command, stdout=follower if stdout_too else subprocess.PIPE, stderr=follower,
+                           stdin=subprocess.DEVNULL)
     os.close(follower)
     out = b""
     while True:
@@ -32,10 +35,11 @@ def on_a_terminal():
             break
         out += chunk
     os.close(leader)
-    return run.wait(), out.decode().replace("\r\n", "\n")
+    piped = b"" if stdout_too else run.stdout.read()
+    return run.wait(), out.decode().replace("\r\n", "\n"), piped.decode()
 
 
-status, out = on_a_terminal()
+status, out, _ = on_a_terminal()
 verdict = "circles conform: the program `" + naive + "` does not conform: "
 assert status == 1, (status, out)
 lines = re.findall(r"\r(\[[#.]{20}\] +\d+%  case \d+ of \d+[^\r]*)", out)
@@ -51,3 +55,9 @@ piped = subprocess.run(command, capture_output=True, text=True)
 assert piped.returncode == 1, piped
 assert "\r" not in piped.stdout and not re.search(r"\[[#.]{20}\]", piped.stdout), repr(piped.stdout[:400])
 assert piped.stdout.startswith(verdict), piped.stdout[:200]
+
+# stdout a pipe, stderr the terminal: the line is drawn on stderr, and stdout holds the verdict alone.
+status, terminal, piped = on_a_terminal(stdout_too=False)
+assert status == 1, (status, terminal)
+assert re.search(r"\r\[[#.]{20}\] +\d+%  case \d+ of 3000", terminal), "no progress on stderr: " + repr(terminal[:400])
+assert "\r" not in piped and not re.search(r"\[[#.]{20}\]", piped) and piped.startswith(verdict), repr(piped[:400])

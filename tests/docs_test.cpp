@@ -263,7 +263,7 @@ std::vector<std::string> commands_in_protocol_md() {
   return rows;
 }
 
-// The subcommands `circles --help` lists (CLI11: "Subcommands:", then one "  name  description" line each).
+// The commands `circles --help` lists ("Commands:", then one "  name  description" line each).
 std::set<std::string> commands_of_the_program() {
   const Output help = output_of(std::string("'") + CIRCLES_PROGRAM + "' --help");
   EXPECT_EQ(help.status, 0);
@@ -272,7 +272,7 @@ std::set<std::string> commands_of_the_program() {
   bool listed = false;
   const std::regex command(R"(^  ([a-z][a-z-]*)\s.*)");
   for (std::string line; std::getline(lines, line);) {
-    if (line.starts_with("Subcommands:")) listed = true;
+    if (line.starts_with("Commands:")) listed = true;
     std::smatch c;
     if (listed && std::regex_match(line, c, command)) commands.insert(c[1]);
   }
@@ -367,13 +367,13 @@ TEST(docs, every_qualified_name_the_docs_cite_is_declared_where_its_namespace_sa
   EXPECT_GT(names, 100);
 }
 
-// The options a command takes, from its --help (CLI11: "  --name ..." lines), --help itself left out.
+// The options a command takes, from its --help ("  --name ..." lines, "  -h, --help ..."), --help itself left out.
 std::set<std::string> options_of(const std::string& command) {
   const Output help = output_of(std::string("'") + CIRCLES_PROGRAM + "' " + command + " --help");
   EXPECT_EQ(help.status, 0) << "circles " << command << " --help";
   std::set<std::string> options;
   std::istringstream lines(help.text);
-  const std::regex option(R"(^ +(?:-\w,)?(--[a-z][a-z-]*)\b.*)");
+  const std::regex option(R"(^ +(?:-\w, )?(--[a-z][a-z-]*)\b.*)");
   for (std::string line; std::getline(lines, line);) {
     std::smatch o;
     if (std::regex_match(line, o, option) && o[1] != "--help") options.insert(o[1]);
