@@ -53,13 +53,16 @@ std::string decision(const Circles& in, std::size_t k, spec::Field field, const 
       contacts.push_back(j);
   const std::string circle = "circle " + std::to_string(k);
   if (contacts.empty()) return kIntersect + circle + " touches no circle, yet its velocity changed";
-  if (same_velocity(actual[k], in[k]))
-    return kIntersect + circle + " touches circle " + std::to_string(contacts.front()) +
-           (contacts.size() > 1 ? " and others" : "") + " but kept its own velocity";
+  // The velocity of a contact that is not the least is e (8)'s fault, even where it equals the circle's own: the
+  // contacts were found (a program that keeps only some of them takes the least of those it kept).
   for (const std::size_t j : contacts)
     if (same_velocity(actual[k], in[j]))
       return kLeastContact + circle + " took the velocity of circle " + std::to_string(j) +
-             ", a contact but not the least one";
+             ", a contact but not the least one" +
+             (same_velocity(actual[k], in[k]) ? " (the same as its own)" : "");
+  if (same_velocity(actual[k], in[k]))
+    return kIntersect + circle + " touches circle " + std::to_string(contacts.front()) +
+           (contacts.size() > 1 ? " and others" : "") + " but kept its own velocity";
   return kLeastContact + circle + " took a velocity that none of its contacts has";
 }
 

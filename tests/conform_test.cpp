@@ -165,6 +165,15 @@ TEST(conform, compares_positions_within_the_level_and_decisions_exactly) {
   EXPECT_EQ(compare(three, spec::resolved_step_rounded(three), chose, Level{1000})->decision,
             "the least-contact rule e (8) (docs/math.md#8-e--spece): circle 0 took the velocity of circle 1, a "
             "contact but not the least one");
+  // A contact's velocity that is also the circle's own: the contacts were found, and the least was not taken
+  // (a program that keeps only its first contacts). Circle 0's least contact is circle 2 (px -1); circle 1 moves
+  // as circle 0 does, and circle 0 answers that velocity.
+  const Circles same{{0, 0, 1, 0, 1}, {1, 0, 1, 0, 1}, {-1, 0, 3, 0, 1}};
+  Circles kept_first = spec::resolved_step_rounded(same);
+  kept_first[0][2] = 1;
+  EXPECT_EQ(compare(same, spec::resolved_step_rounded(same), kept_first, Level{1000})->decision,
+            "the least-contact rule e (8) (docs/math.md#8-e--spece): circle 0 took the velocity of circle 1, a "
+            "contact but not the least one (the same as its own)");
 }
 
 // NaN and the infinities differ from every expected value, in every field, at every level: never "equal" from

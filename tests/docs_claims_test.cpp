@@ -1,6 +1,7 @@
 // Sentences of README.md and docs/ checked against what they speak of: the program's output, the default scene,
 // scripts/setup, the benchmarks' figures of record, and the files of the repository that the text names.
 #include "formats/scene.hpp"
+#include "properties/boundaries.hpp"
 #include "tests/repository.hpp"
 
 #include <gtest/gtest.h>
@@ -112,6 +113,33 @@ TEST(docs_claims, every_file_of_the_repository_a_file_names_exists) {
     }
   }
   EXPECT_GT(named, 300u);
+}
+
+// docs/vectors.md shows the summary of the command it gives, run from the repository's root: the same cases, the
+// same count of the big families' cases left out, the same features.
+TEST(docs_claims, vectors_md_shows_the_summary_its_command_prints) {
+  const Output summary = output_of("cd " + quoted(root) + " && '" + CIRCLES_PROGRAM + "' vectors --out - 2>&1 >/dev/null");
+  ASSERT_EQ(summary.status, 0) << summary.text;
+  // --out vectors names its file vectors/vectors.jsonl where --out - says standard output.
+  const std::string printed =
+      std::regex_replace(summary.text, std::regex("^circles vectors: standard output: "), "circles vectors: vectors/vectors.jsonl: ");
+  const std::string doc = text_of("docs/vectors.md");
+  EXPECT_NE(doc.find("./build/circles vectors --out vectors "), std::string::npos);
+  EXPECT_NE(doc.find("```\n" + printed + "```\n"), std::string::npos)
+      << "docs/vectors.md does not show the summary the command prints:\n" << printed;
+  EXPECT_NE(printed.find("left out: "), std::string::npos) << printed;
+}
+
+// How many cases a family gets of RapidCheck's default 100, as docs/properties.md says it in more than one place:
+// 100 over the resolved profile's families.
+TEST(docs_claims, properties_md_gives_one_count_of_cases_a_family_of_a_default_run) {
+  const auto families = circles::properties::families(circles::properties::Profile::resolved).size();
+  const std::string text = std::regex_replace(text_of("docs/properties.md"), std::regex("\n"), " ");
+  const std::regex count(R"(100 cases[^.]*? gets about (\d+))");
+  std::size_t said = 0;
+  for (std::sregex_iterator m(text.begin(), text.end(), count), end; m != end; ++m, ++said)
+    EXPECT_EQ(std::stoul((*m)[1]), (100 + families / 2) / families) << m->str();
+  EXPECT_GE(said, 2u);
 }
 
 }  // namespace

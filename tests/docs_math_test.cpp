@@ -1,14 +1,17 @@
 // The math of the docs as GitHub shows it, and docs/math.md's worked example as the oracle computes it.
 //
-// GitHub reads Markdown before MathJax sees the math: inside $...$ its escapes eat `\{`, `\}` and `\\`, so a set
-// loses its braces and a `cases` its rows. Display math in a ```math fence is passed through whole, and inline
-// sets are written with \lbrace and \rbrace.
+// GitHub reads Markdown before MathJax sees the math: inside $...$ its escapes eat the backslash before any ASCII
+// punctuation (`\{`, `\}`, `\\`, `\,`), so a set loses its braces, a `cases` its rows and a thin space shows as a
+// comma; and it takes $...$ as math only within one line and with no space just inside the dollars. Display math
+// in a ```math fence is passed through whole, inline sets are written with \lbrace and \rbrace, and a product with
+// \cdot.
 #include "spec/equations.hpp"
 #include "tests/repository.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <map>
 #include <optional>
 #include <set>
@@ -76,15 +79,23 @@ std::vector<std::string> math_faults(const std::filesystem::path& doc) {
       continue;
     }
     const std::string math = text.substr(at + 1, close - at - 1);
-    for (const char* escape : {"\\{", "\\}", "\\\\"})
-      if (math.find(escape) != std::string::npos)
-        faults.push_back(where(at) + escape + " inside inline math $" + math + "$ (GitHub's Markdown eats it)");
+    // Markdown reads a backslash before any ASCII punctuation as an escape and drops it: \{, \}, \\, \, and \;
+    // reach MathJax as {, }, \, "," and ";".
+    for (std::size_t b = math.find('\\'); b != std::string::npos && b + 1 < math.size(); b = math.find('\\', b + 2))
+      if (std::ispunct(static_cast<unsigned char>(math[b + 1])))
+        faults.push_back(where(at) + math.substr(b, 2) + " inside inline math $" + math + "$ (GitHub's Markdown eats it)");
+    // GitHub takes $...$ as math only on one line, and only with no space just inside either $.
+    if (math.find('\n') != std::string::npos)
+      faults.push_back(where(at) + "inline math $" + math + "$ across a line break (GitHub shows it as text)");
+    else if (!math.empty() && (std::isspace(static_cast<unsigned char>(math.front())) ||
+                               std::isspace(static_cast<unsigned char>(math.back()))))
+      faults.push_back(where(at) + "a space just inside inline math $" + math + "$ (GitHub shows it as text)");
     at = close + 1;
   }
   return faults;
 }
 
-TEST(docs_math, no_doc_has_display_math_outside_a_math_fence_or_an_escape_github_eats_in_inline_math) {
+TEST(docs_math, no_doc_has_math_that_github_would_break) {
   std::size_t docs = 0;
   for (const std::filesystem::path& file : repository_files()) {
     if (file.extension() != ".md") continue;
