@@ -96,6 +96,11 @@ std::string HelpFormatter::make_description(const CLI::App* app) const {
   return description.empty() ? "" : wrapped(description, width_, 0, "") + "\n\n";
 }
 
+std::string HelpFormatter::make_footer(const CLI::App* app) const {
+  const std::string footer = app->get_footer();
+  return footer.empty() ? "" : wrapped(footer, width_, 0, "") + "\n";
+}
+
 std::string HelpFormatter::make_subcommand(const CLI::App* sub) const {
   return row(sub->get_display_name(true), sub->get_description());
 }

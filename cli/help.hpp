@@ -24,6 +24,7 @@ class HelpFormatter : public CLI::Formatter {
   explicit HelpFormatter(std::size_t width);
 
   std::string make_description(const CLI::App* app) const override;
+  std::string make_footer(const CLI::App* app) const override;
   std::string make_subcommand(const CLI::App* sub) const override;
   std::string make_option(const CLI::Option* option, bool is_positional) const override;
   std::string make_option_name(const CLI::Option* option, bool is_positional) const override;

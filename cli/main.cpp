@@ -147,6 +147,12 @@ int dispatch(CLI::App& app, Commands& c) {
     if (isatty(STDERR_FILENO)) c.conform_options.progress = &std::cerr;
     // A report on stdout keeps stdout to itself: the verdict goes to stderr.
     const ConformCommandOptions& o = c.conform_options;
+    if (const std::string both = two_on_stdout({{"--report", o.report}, {"--junit", o.junit}, {"--svg", o.svg},
+                                                 {"--write-expect", o.write_expect}});
+        !both.empty()) {
+      std::cerr << "circles conform: " << both << "\n";
+      return 2;
+    }
     const bool stdout_taken = any_is_standard_output({o.report, o.junit, o.svg, o.write_expect});
     return conform_command(c.conform_options, stdout_taken ? std::cerr : std::cout, std::cerr);
   }
@@ -197,11 +203,14 @@ int main(int argc, char** argv) {
   });
   // A flag takes no value: `--fit=abc` is refused by name (usage_error) rather than converted.
   app.option_defaults()->disable_flag_override();
+  app.set_help_flag("-h,--help", "Show this help and exit");
+  app.set_version_flag("-V,--version", "circles " CIRCLES_VERSION, "Show the version and exit");
   app.require_subcommand(0, 1);
-  app.set_version_flag("-V,--version", "circles " CIRCLES_VERSION);
   Commands commands;
   declare(app, commands);
-  app.footer("`circles help COMMAND` shows the options of a command.");  // after the commands, which would copy it
+  // After the commands, which would copy it.
+  app.footer("A FILE of - is stdout for an output and stdin for an input. `circles help COMMAND` shows the options "
+             "of a command.");
   if (const std::optional<int> status = parse(app, commands, argc, argv)) return *status;
   try {
     return dispatch(app, commands);

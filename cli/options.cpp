@@ -2,6 +2,7 @@
 
 #include "engines/registry.hpp"
 #include "formats/input_file.hpp"
+#include "formats/output_file.hpp"
 #include "formats/scene.hpp"
 
 #include <algorithm>
@@ -77,6 +78,14 @@ CLI::Option* takes_one_of(CLI::Option* option, const std::string& metavariable, 
   return takes_checked(option, metavariable, wants, [=](const std::string& value) {
     return std::find(names.begin(), names.end(), value) != names.end() ? std::string() : found(wants, value);
   });
+}
+
+std::string two_on_stdout(std::initializer_list<std::pair<const char*, std::string>> given) {
+  std::vector<const char*> on_stdout;
+  for (const auto& [option, path] : given)
+    if (formats::is_standard_output(path)) on_stdout.push_back(option);
+  if (on_stdout.size() < 2) return "";
+  return std::string(on_stdout[0]) + " and " + on_stdout[1] + " both go to stdout; give - to one of them";
 }
 
 Takes takes_of(const CLI::Option& option) {

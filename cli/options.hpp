@@ -6,7 +6,9 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <initializer_list>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace circles::cli {
@@ -28,6 +30,10 @@ CLI::Option* takes_output_file(CLI::Option* option);  // FILE: a file to write, 
 CLI::Option* takes_input_file(CLI::Option* option);   // FILE: a file to read, or - for stdin
 // One of `names`, refused otherwise: "--engine: \"fast\" is not double or exact".
 CLI::Option* takes_one_of(CLI::Option* option, const std::string& metavariable, const std::vector<std::string>& names);
+
+// "--trace and --video both go to stdout; give - to one of them" when two of the outputs `given` (each an option
+// and its path, "" for none) are stdout (formats::is_standard_output), whose bytes would interleave; else "".
+std::string two_on_stdout(std::initializer_list<std::pair<const char*, std::string>> given);
 
 // The metavariable and the words of what `option` takes, as the functions above set them: {"N", "a whole
 // number from 0 to 100"}; a flag's are empty.

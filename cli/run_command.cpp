@@ -82,6 +82,12 @@ int run_command(const SceneOptions& scene, const RunCommandOptions& given, std::
     err << "circles run: --fit and --every shape the frames of --render and --video, and neither is given\n";
     return 2;
   }
+  if (const std::string both = two_on_stdout({{"--trace", given.trace}, {"--exact-trace", given.exact_trace},
+                                               {"--render", given.render}, {"--video", given.video}});
+      !both.empty()) {
+    err << "circles run: " << both << "\n";
+    return 2;
+  }
   if (!from_file) world = world_of(scene, engine);
   const RunOptions options{.steps = given.steps_option->count() == 0 && world.steps ? *world.steps : given.steps,
                            .engine = &engine,

@@ -127,6 +127,13 @@ dash_is_stdout_for_every_output_and_stdin_for_every_input)
     ! grep -q '^circles ' "$dir/said" || fail "$output: a summary on stdout"
   done
   [ ! -e "$dir/-" ] || fail "a file named - was made"
+  # Two outputs on stdout would interleave: refused before any work.
+  expect_exit 2 sh -c '"$1" run --trace - --video /dev/stdout >"$2" 2>"$3"' sh "$circles" "$dir/out" "$dir/err"
+  [ "$(cat "$dir/err")" = "circles run: --trace and --video both go to stdout; give - to one of them" ] && [ ! -s "$dir/out" ] ||
+    fail "two outputs on stdout: $(cat "$dir/err")"
+  expect_exit 2 sh -c '"$1" conform --report - --junit - >"$2" 2>"$3"' sh "$circles" "$dir/out" "$dir/err"
+  [ "$(cat "$dir/err")" = "circles conform: --report and --junit both go to stdout; give - to one of them" ] ||
+    fail "two reports on stdout: $(cat "$dir/err")"
   "$circles" run --steps 2 --trace - 2>/dev/null >"$dir/trace.jsonl"
   [ "$(wc -l <"$dir/trace.jsonl")" -eq 3 ] || fail "run --trace -: $(cat "$dir/trace.jsonl")"
   # The frames one PNG after another (the signature, 8 bytes, three times).
