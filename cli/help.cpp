@@ -1,6 +1,7 @@
 #include "cli/help.hpp"
 
 #include "cli/options.hpp"
+#include "cli/usage.hpp"
 
 #include <sys/ioctl.h>
 #include <unistd.h>
@@ -135,6 +136,37 @@ std::string HelpFormatter::make_option_desc(const CLI::Option* option) const {
   if (!option->get_needs().empty()) description += "; needs " + named(option->get_needs());
   if (!option->get_excludes().empty()) description += "; not with " + named(option->get_excludes());
   return description;
+}
+
+int help_command(const CLI::App& app, const std::vector<std::string>& topic, std::ostream& out, std::ostream& err) {
+  const CLI::App* at = &app;
+  for (const std::string& word : topic) {
+    std::vector<std::string> names;
+    const CLI::App* next = nullptr;
+    for (const CLI::App* s : at->get_subcommands({})) {
+      names.push_back(s->get_name());
+      if (s->get_name() == word) next = s;
+    }
+    if (!next) {
+      // "circles help: unknown command `rn`: did you mean `run`?"; "circles help: `circles report` has no command
+      // `x`; `circles help report` lists its commands"
+      err << "circles help: ";
+      if (names.empty()) {
+        err << "`" << command_of(*at) << "` has no commands\n";
+        return 2;
+      }
+      const std::string near = nearest(word, names);
+      const std::string help = "circles help" + command_of(*at).substr(std::string("circles").size());
+      err << (at == &app ? "unknown command `" + word + "`" : "`" + command_of(*at) + "` has no command `" + word + "`")
+                << (near.empty() ? "; `" + help + "` lists " + (at == &app ? "the" : "its") + " commands"
+                                 : ": did you mean `" + near + "`?")
+                << "\n";
+      return 2;
+    }
+    at = next;
+  }
+  out << at->get_formatter()->make_help(at, command_of(*at), CLI::AppFormatMode::Normal);
+  return 0;
 }
 
 }  // namespace circles::cli

@@ -6,7 +6,9 @@
 #include <CLI/CLI.hpp>
 
 #include <cstddef>
+#include <ostream>
 #include <string>
+#include <vector>
 
 namespace circles::cli {
 
@@ -36,6 +38,10 @@ class HelpFormatter : public CLI::Formatter {
   std::string row(const std::string& name, const std::string& description) const;
   std::size_t width_;
 };
+
+// `circles help COMMAND...`: the help of the command `topic` names on `out`, as its --help shows it, and 0; or 2
+// with "circles help: unknown command `rn`: did you mean `run`?" on `err`.
+int help_command(const CLI::App& app, const std::vector<std::string>& topic, std::ostream& out, std::ostream& err);
 
 // How messages and the help name an option: its metavariable for a positional ("SCENE"), else its name
 // ("--steps").

@@ -92,43 +92,11 @@ std::optional<int> parse(CLI::App& app, Commands& c, int argc, char** argv) {
   return std::nullopt;
 }
 
-// `circles help COMMAND...`: the help of the command named, as its --help shows it.
-int help_command(const CLI::App& app, const std::vector<std::string>& topic) {
-  const CLI::App* at = &app;
-  for (const std::string& word : topic) {
-    std::vector<std::string> names;
-    const CLI::App* next = nullptr;
-    for (const CLI::App* s : at->get_subcommands({})) {
-      names.push_back(s->get_name());
-      if (s->get_name() == word) next = s;
-    }
-    if (!next) {
-      // "circles help: unknown command `rn`: did you mean `run`?"; "circles help: `circles report` has no command
-      // `x`; `circles help report` lists its commands"
-      std::cerr << "circles help: ";
-      if (names.empty()) {
-        std::cerr << "`" << command_of(*at) << "` has no commands\n";
-        return 2;
-      }
-      const std::string near = nearest(word, names);
-      const std::string help = "circles help" + command_of(*at).substr(std::string("circles").size());
-      std::cerr << (at == &app ? "unknown command `" + word + "`" : "`" + command_of(*at) + "` has no command `" + word + "`")
-                << (near.empty() ? "; `" + help + "` lists " + (at == &app ? "the" : "its") + " commands"
-                                 : ": did you mean `" + near + "`?")
-                << "\n";
-      return 2;
-    }
-    at = next;
-  }
-  std::cout << at->get_formatter()->make_help(at, command_of(*at), CLI::AppFormatMode::Normal);
-  return 0;
-}
-
 // The command parsed, run. A progress line or bar only on a terminal, always on stderr: output to a pipe, a file
 // or CI stays free of it, and stdout holds only what the command says. Every command but conform (whose run
 // loop stops its candidate itself) and serve ends on SIGINT, SIGTERM and SIGHUP as cli/interrupt.hpp says.
 int dispatch(CLI::App& app, Commands& c) {
-  if (*c.help) return help_command(app, c.help_topic);
+  if (*c.help) return help_command(app, c.help_topic, std::cout, std::cerr);
   if (*c.families) {
     print_family_list(circles::properties::parse_profile(c.families_options.profile), std::cout);
     return 0;
