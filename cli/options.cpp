@@ -28,7 +28,7 @@ void add_engine_options(CLI::App* command, std::string& engine_name, unsigned& t
           },
           "ENGINE"));
   // CLI11 reads unsigned values with strtoull, which wraps "-1" to 2^64 - 1, so the range refuses negatives too.
-  command->add_option("--threads", threads, "Threads (0: all cores)")
+  command->add_option("--threads", threads, "Threads (0: one per core that other programs leave free)")
       ->capture_default_str()
       ->check(CLI::Range(0u, engines::max_threads()));
 }
