@@ -189,11 +189,12 @@ std::optional<Difference> compare(const Circles& input, const Circles& expected,
 }
 
 void step_conforms(const Step& step, const Options& options) {
-  const auto [family, w_0] = *rc::gen::map(gen::boundary_case(options.profile), [](std::pair<Family, Circles> c) {
+  const StepConformsCase drawn = *rc::gen::map(gen::boundary_case(options.profile), [](std::pair<Family, Circles> c) {
     return StepConformsCase{c.first, std::move(c.second)};
   });
+  const Family family = drawn.family;  // a variable, not a structured binding: the lambdas below capture it
   RC_TAG(name(family));
-  Chain chain(w_0, std::max(options.steps, steps_to_decide(family)), options.level);
+  Chain chain(drawn.world, std::max(options.steps, steps_to_decide(family)), options.level);
   // "step 2 of 3 (family tangency, resolved profile, level exact)"
   const auto which = [&](std::uint64_t s) {
     return "step " + std::to_string(s) + " of " + std::to_string(chain.steps()) + " (family " + name(family) + ", " +
