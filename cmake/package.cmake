@@ -15,12 +15,14 @@ set(CPACK_PACKAGE_NAME circles)
 set(CPACK_PACKAGE_VENDOR "The circles authors")
 set(CPACK_PACKAGE_CONTACT "The circles authors")
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "conformance suite for the circles 2D physics spec")
+# The extended description, under the summary, which cpack puts first.
 set(CPACK_DEBIAN_PACKAGE_DESCRIPTION
-    "conformance suite for the circles 2D physics spec\n"
-    "The circles program checks an implementation of the spec's step, in any language, over a line protocol\n"
-    "(circles conform), and runs, traces and draws worlds with exact engines. The C++ property library\n"
-    "(RapidCheck generators of the spec's boundary worlds and the conformance property) comes as the CMake\n"
-    "package circles, for find_package(circles) in a project's own GoogleTest.")
+    "The circles program checks an implementation of the spec's step, in any\n"
+    "language, over a line protocol (circles conform), and runs, traces and\n"
+    "draws worlds with exact engines. The C++ property library (RapidCheck\n"
+    "generators of the spec's boundary worlds and the conformance property)\n"
+    "comes as the CMake package circles, for find_package(circles) in a\n"
+    "project's own GoogleTest.")
 string(JOIN "" CPACK_DEBIAN_PACKAGE_DESCRIPTION ${CPACK_DEBIAN_PACKAGE_DESCRIPTION})
 set(CPACK_RESOURCE_FILE_LICENSE ${PROJECT_SOURCE_DIR}/LICENSE)
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
