@@ -22,7 +22,7 @@ namespace circles::cli {
 struct ConformCommandOptions {
   std::string engine = "double";  // --engine NAME, one of engines/registry.hpp
   bool engine_given = false;
-  unsigned threads = 0;           // --threads T of the engine (0: all cores)
+  unsigned threads = 0;           // --threads T of the engine (0: chosen from the load, impl::choose_threads)
   bool threads_given = false;
   std::string exec;               // --exec COMMAND: check this program instead of an engine ("" for none)
   double timeout = 10;            // --timeout: seconds to wait for each answer of the program

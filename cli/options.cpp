@@ -104,7 +104,7 @@ void add_engine_options(CLI::App* command, std::string& engine_name, unsigned& t
                 "an engine: " + names, [](const std::string& name) {
                   return engines::find_engine(name) ? std::string() : std::string(engines::UnknownEngine(name).what());
                 });
-  takes_whole_number(command->add_option("--threads", threads, "Threads (0: all cores)")->capture_default_str(), "N",
+  takes_whole_number(command->add_option("--threads", threads, "Threads (0: one per core that other programs leave free)")->capture_default_str(), "N",
                      0, engines::max_threads());
 }
 

@@ -2,6 +2,7 @@
 
 #include "cli/counted.hpp"
 #include "formats/output_file.hpp"
+#include "formats/xml_text.hpp"
 
 namespace circles::cli {
 namespace {
@@ -11,24 +12,7 @@ using conform::FamilyResult;
 using conform::FamilyStatus;
 using conform::Verdict;
 
-// XML text: the five special characters escaped, and the bytes XML 1.0 cannot hold (control characters but
-// tab, newline and carriage return) as U+FFFD. Other bytes pass as they are (UTF-8 in, UTF-8 out).
-std::string xml(const std::string& s) {
-  std::string out;
-  for (const char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n' && c != '\r') out += "\xEF\xBF\xBD";
-        else out += c;
-    }
-  }
-  return out;
-}
+std::string xml(const std::string& s) { return formats::xml_text(s); }
 
 }  // namespace
 

@@ -16,7 +16,6 @@
 #include <optional>
 #include <sstream>
 #include <stdexcept>
-#include <thread>
 #include <utility>
 
 namespace circles::cli {
@@ -96,7 +95,8 @@ RunResult run(Circles world, const RunOptions& options) {
 
   std::optional<Frame> frame;
   if (pictures) frame.emplace();
-  LineWriter writer(options.threads);
+  // The trace's threads, for --threads 0 chosen from the load as the engine's are.
+  LineWriter writer(impl::ThreadCount(options.threads, max_threads(), world.size()).count());
   const std::size_t circles = world.size();
   const TextSink to_trace = [&](std::string_view text) { trace->write(text); };
   std::string line;
@@ -140,6 +140,7 @@ RunResult run(Circles world, const RunOptions& options) {
     }
   }
   result.work = stepper->work();
+  if (const impl::ThreadCount* threads = stepper->threads()) result.threads = *threads;
   commit(trace, exact_trace, video, result);
   progress.finish();
   result.total = Clock::now() - started;
@@ -148,11 +149,34 @@ RunResult run(Circles world, const RunOptions& options) {
 
 namespace {
 
-std::string threads_text(const RunOptions& options) {
-  if (!options.engine->threaded) return "1 thread";
-  if (options.threads == 1) return "1 thread";
-  if (options.threads == 0) return "all cores";
-  return std::to_string(options.threads) + " threads";
+// The threads the steps ran on: "2", or "1 to 2" where the load changed the count during the run.
+std::string thread_counts(const RunResult& result, const RunOptions& options) {
+  if (!options.engine->threaded) return "1";
+  if (!result.threads) return std::to_string(options.threads);
+  const impl::ThreadCount& t = *result.threads;
+  return std::to_string(t.least()) + (t.least() == t.most() ? "" : " to " + std::to_string(t.most()));
+}
+
+std::string threads_text(const RunResult& result, const RunOptions& options) {
+  const std::string counts = thread_counts(result, options);
+  return counts + (counts == "1" ? " thread" : " threads") +
+         (options.engine->threaded && result.threads && result.threads->load() ? ", chosen from the load" : "");
+}
+
+// Why --threads 0 gave the count it did: "chosen from the load: 2 cores, 2 tasks of other programs running" (at
+// the last reading), "a world of fewer than 8192 circles runs on one"; empty for a count given.
+std::string threads_reason(const RunResult& result, const RunOptions& options) {
+  if (options.threads != 0 || !result.threads) return {};
+  const std::optional<impl::CoreLoad>& load = result.threads->load();
+  if (!load) return "a world of fewer than " + std::to_string(impl::kParallelFrom) + " circles runs on one";
+  std::string text = "chosen from the load";
+  if (result.threads->least() != result.threads->most())
+    text += ", read every " + std::to_string(impl::ThreadCount::kReadEvery.count()) + " ms; last";
+  text += ": " + std::to_string(load->cores) + (load->cores == 1 ? " core" : " cores");
+  if (load->online != load->cores) text += " of the machine's " + std::to_string(load->online);
+  if (load->others == 0) return text + ", no other program running";
+  return text + ", " + std::to_string(load->others) + (load->others == 1 ? " task" : " tasks") +
+         " of other programs running";
 }
 
 // The last multiple of `every` up to `steps`: the step of the last frame.
@@ -185,7 +209,7 @@ std::string figure(double x) {
 
 void print_summary(const RunResult& result, std::size_t circles, const RunOptions& options, std::ostream& out) {
   out << counted(result.steps, "step") << " of " << counted(circles, "circle") << " with the " << options.engine->name
-      << " engine (" << threads_text(options) << "): " << figure(result.stepping.count()) << " s stepping";
+      << " engine (" << threads_text(result, options) << "): " << figure(result.stepping.count()) << " s stepping";
   const double circle_steps = static_cast<double>(result.steps) * static_cast<double>(circles);
   if (circle_steps > 0) out << ", " << figure(result.stepping.count() * 1e9 / circle_steps) << " ns per circle-step";
   out << "\n";
@@ -232,10 +256,10 @@ void print_stats(const RunResult& result, std::size_t circles, const RunOptions&
   out << "threads: ";
   if (!options.engine->threaded)
     out << "1 (the " << options.engine->name << " engine has none)\n";
-  else if (options.threads == 0)
-    out << std::clamp(std::thread::hardware_concurrency(), 1u, max_threads()) << " (all cores)\n";
+  else if (const std::string why = threads_reason(result, options); !why.empty())
+    out << thread_counts(result, options) << " (" << why << ")\n";
   else
-    out << options.threads << "\n";
+    out << thread_counts(result, options) << "\n";
   out << "stepping: " << figure(result.stepping.count()) << " s\n";
   const double circle_steps = static_cast<double>(result.steps) * static_cast<double>(circles);
   if (circle_steps > 0) out << "ns per circle-step: " << figure(result.stepping.count() * 1e9 / circle_steps) << "\n";

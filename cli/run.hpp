@@ -8,6 +8,7 @@
 #include "engines/registry.hpp"
 #include "formats/output_file.hpp"
 #include "formats/scene.hpp"
+#include "impl/threads.hpp"
 #include "spec/circle.hpp"
 
 #include <chrono>
@@ -25,7 +26,7 @@ using TraceError = OutputError;
 struct RunOptions {
   std::uint64_t steps = 0;
   const EngineEntry* engine = nullptr;
-  unsigned threads = 0;     // 0: all cores
+  unsigned threads = 0;     // 0: one per core free of other work (impl::ThreadCount)
   std::string trace{};      // the trace file, or empty for none
   std::string exact_trace{};  // --exact-trace FILE: the exact worlds as rationals (an exact engine only), or empty
   std::string render{};     // --render DIR: the directory of the PNG frames, or empty for none
@@ -48,6 +49,8 @@ struct RunResult {
   std::uint64_t trace_bytes = 0;         // the trace's size
   Seconds total{};                       // the whole of run(), from its first output file to its last
   std::optional<impl::EngineStats> work;  // what the engine's steps did and skipped (engines of impl/ only)
+  // The engine's threads (an engine with threads): options.threads, or for 0 from the machine's load.
+  std::optional<impl::ThreadCount> threads;
 };
 
 // Steps w_0 = `world` with options.engine up to options.steps times, stopping at the first overflow.
@@ -70,7 +73,9 @@ struct RunResult {
 // w_0, which for a big world is memory the steps can use.
 RunResult run(Circles world, const RunOptions& options);
 
-// "100 steps of 10 circles with the double engine (all cores): 0.000135 s stepping, 135 ns per circle-step",
+// "100 steps of 10 circles with the double engine (1 thread): 0.000135 s stepping, 135 ns per circle-step" (for
+// threads chosen from the load, "(2 threads, chosen from the load)", or "(1 to 2 threads, ...)" where the count
+// changed during the run),
 // then a line for each output: "trace: t.jsonl (w_0 to w_100, 101 lines)", "frames: f/frame-000000.png to
 // f/frame-000099.png (34, every 3 steps)", "video: v.mp4 (34 frames at 60 frames/s, 0.567 s)"; figures to 3 significant digits in plain decimals.
 void print_summary(const RunResult& result, std::size_t circles, const RunOptions& options, std::ostream& out);
@@ -83,10 +88,12 @@ void print_work(const impl::EngineStats& work, std::size_t circles, std::ostream
 //   steps: 1000                    stepping: 0.00123 s            drawing: 1.2 s (3.6 ms per frame)
 //   circles: 10                    ns per circle-step: 123        png: 2.1 s (6.3 ms per frame)
 //   engine: double                 fit pass: 0.0011 s             video: 0.9 s (2.7 ms per frame)
-//   threads: 2 (all cores)         frames: 334                    trace: 0.5 s (209000000 bytes, 418 MB/s)
+//   threads: 2 (see below)         frames: 334                    trace: 0.5 s (209000000 bytes, 418 MB/s)
 //                                                                 total: 4.3 s
 // in that order, one a line (down the first column, then the second, then the third); an engine of impl/
-// adds print_work's lines after "ns per circle-step".
+// adds print_work's lines after "ns per circle-step". Threads chosen for --threads 0 say why: "1 (chosen from
+// the load: 2 cores, 2 tasks of other programs running)", "1 to 2 (chosen from the load, read every 100 ms; last:
+// 2 cores, no other program running)", "1 (a world of fewer than 8192 circles runs on one)".
 void print_stats(const RunResult& result, std::size_t circles, const RunOptions& options, std::ostream& out);
 
 // One line: "double engine: agrees with the correctly rounded oracle at each of the 100 steps" or "double

@@ -17,7 +17,7 @@ struct RunCommandOptions {
   std::uint64_t steps = 100;            // --steps, else the scene's "steps", else 100
   CLI::Option* steps_option = nullptr;  // whether --steps was given, and its default for --help
   std::string engine = "double";        // --engine NAME (engines/registry.hpp)
-  unsigned threads = 0;                 // --threads T (0: all cores)
+  unsigned threads = 0;                 // --threads T (0: chosen from the load, impl::choose_threads)
   std::string trace, exact_trace;       // --trace FILE, --exact-trace FILE ("" for none)
   std::string render, video;            // --render DIR, --video FILE.mp4 ("" for none)
   std::uint64_t every = 1;              // --every K

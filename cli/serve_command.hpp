@@ -11,7 +11,7 @@ namespace circles::cli {
 
 struct ServeCommandOptions {
   std::string engine = "double";  // --engine NAME (engines/registry.hpp)
-  unsigned threads = 0;           // --threads T (0: all cores)
+  unsigned threads = 0;           // --threads T (0: chosen from the load, impl::choose_threads)
 };
 
 // Declares the command and its options on `app`.

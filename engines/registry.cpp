@@ -50,6 +50,7 @@ class ImplStepper final : public Stepper {
     if constexpr (requires { engine_.stats(); }) return engine_.stats();
     return std::nullopt;
   }
+  const impl::ThreadCount* threads() const override { return &engine_.thread_count(); }
 
  private:
   std::optional<Overflow> advance() override {

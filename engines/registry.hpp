@@ -13,6 +13,7 @@
 #include "formats/trace_writer.hpp"  // formats::CircleSource
 #include "impl/overflow.hpp"  // impl::PositionOverflow
 #include "impl/pair_list.hpp"  // impl::EngineStats
+#include "impl/threads.hpp"
 #include "spec/oracle.hpp"  // spec::Sequence
 #include "spec/outside_c.hpp"
 
@@ -54,6 +55,8 @@ class Stepper {
   // What the steps so far did and skipped (impl::EngineStats), from an engine of impl/; nullopt from the
   // oracle, which does everything every step.
   virtual std::optional<impl::EngineStats> work() const { return std::nullopt; }
+  // The threads of an engine of impl/ and how they are chosen; nullptr from the oracle, which has none.
+  virtual const impl::ThreadCount* threads() const { return nullptr; }
 
  protected:
   struct Overflow {
@@ -75,8 +78,8 @@ struct EngineEntry {
   // The bytes per circle that `circles run` with this engine holds at its peak, for the memory check of a
   // random world (formats::random_world). Measured, not derived: registry.cpp gives the figures.
   std::size_t bytes_per_circle;
-  // A stepper at w_0 = `world` (circles of C in the resolved profile) using up to `threads` threads (0: all
-  // cores; engines without threads ignore it), for a run of `steps` steps when the caller knows it (0: not
+  // A stepper at w_0 = `world` (circles of C in the resolved profile) using up to `threads` threads (0: one
+  // per core that other programs leave free, impl/threads.hpp; engines without threads ignore it), for a run of `steps` steps when the caller knows it (0: not
   // known), which an engine plans for (impl::EngineOptions::steps). It still takes any number of steps.
   std::unique_ptr<Stepper> (*start)(const Circles& world, unsigned threads, std::uint64_t steps);
 };

@@ -34,8 +34,8 @@
 namespace circles::impl {
 
 struct EngineOptions {
-  // Worker threads; 0 means one per core (std::thread::hardware_concurrency()). Results are the same bits
-  // for every value.
+  // Worker threads; 0 means one per core that other programs leave free, for a world big enough to use
+  // threads (impl/threads.hpp: choose_threads). Results are the same bits for every value.
   unsigned threads = 0;
   // Keep candidate pairs across steps (impl/pair_list.hpp: a list with a proven skin, rebuilt when its
   // horizon ends); false builds a list for every step alone. Results are the same bits either way.

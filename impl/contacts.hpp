@@ -14,6 +14,7 @@
 #pragma once
 
 #include "impl/broad_phase.hpp"
+#include "impl/threads.hpp"  // kParallelFrom
 
 #include <algorithm>
 #include <array>
@@ -22,30 +23,15 @@
 #include <exception>
 #include <limits>
 #include <span>
-#include <stdexcept>
-#include <string>
-#include <thread>
 #include <vector>
 
 namespace circles::impl {
 
-// Worlds below this size run on one thread: a parallel region costs more than it saves.
-inline constexpr std::size_t kParallelFrom = 8192;
 // Slots per chunk at least, and chunks per thread. for_each_chunk hands each thread a contiguous run of chunks
 // (schedule(static)). Neither the chunk count nor which thread runs a chunk changes a result: tests/golden_test.cpp
 // holds the trajectories for 1, 2 and 4 threads to one hash.
 inline constexpr std::size_t kMinChunk = 2048;
 inline constexpr std::size_t kChunksPerThread = 4;
-
-// `requested` threads, or one per core for 0. Throws std::invalid_argument above `max`.
-inline unsigned resolve_threads(unsigned requested, unsigned max) {
-  if (requested > max)
-    throw std::invalid_argument("EngineOptions::threads: " + std::to_string(requested) + " is more than " +
-                                std::to_string(max));
-  if (requested != 0) return requested;
-  const unsigned cores = std::thread::hardware_concurrency();
-  return std::clamp(cores, 1u, max);
-}
 
 // The chunks of n slots for `threads` threads: chunk c is [n·c/C, n·(c + 1)/C).
 inline std::size_t chunk_count(std::size_t n, unsigned threads) {

@@ -19,7 +19,6 @@
 #include <limits>
 #include <numeric>
 #include <string>
-#include <thread>
 
 namespace circles::impl {
 namespace {
@@ -75,7 +74,10 @@ bool World::precedes(std::size_t a, std::size_t b) const noexcept {
 
 template <class A>
 BasicEngine<A>::BasicEngine(World w, EngineOptions options)
-    : options_(options), threads_(resolve_threads(options.threads, kMaxThreads)), layout_(w.size()) {
+    : options_(options),
+      thread_count_(options.threads, kMaxThreads, w.size()),
+      threads_(thread_count_.count()),
+      layout_(w.size()) {
   now_.px = std::move(w.px_);
   now_.py = std::move(w.py_);
   now_.vx = std::move(w.vx_);
@@ -125,6 +127,7 @@ bool BasicEngine<A>::precedes(std::size_t a, std::size_t b) const noexcept {
 
 template <class A>
 void BasicEngine<A>::step() {
+  threads_ = thread_count_.next();
   layout_.step(
       stats_, threads_, [this] { rebuild(); },
       [this] {

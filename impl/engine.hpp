@@ -19,6 +19,7 @@
 #include "impl/arithmetic.hpp"
 #include "impl/cell_layout.hpp"
 #include "impl/overflow.hpp"
+#include "impl/threads.hpp"
 #include "spec/outside_c.hpp"
 
 #include <cstddef>
@@ -87,6 +88,9 @@ class BasicEngine {
   std::uint64_t quiet_steps() const noexcept { return stats_.quiet_steps; }
   const EngineStats& stats() const noexcept { return stats_; }
   unsigned threads() const noexcept { return threads_; }
+  // How threads() is chosen: as asked, or for EngineOptions::threads 0 from the machine's load, read again
+  // during the run (impl/threads.hpp).
+  const ThreadCount& thread_count() const noexcept { return thread_count_; }
 
   // One resolved step. Throws PositionOverflow (world unchanged) when a position would become infinite.
   void step();
@@ -112,6 +116,7 @@ class BasicEngine {
   void advance();
 
   EngineOptions options_;
+  ThreadCount thread_count_;
   unsigned threads_ = 1;
   EngineStats stats_;
   bool overflow_free_ = false;  // proven at the rebuild: no position can overflow before the next one

@@ -93,7 +93,7 @@ To convert(const From& x) {
 }  // namespace
 
 ExactEngine::ExactEngine(const World& w, EngineOptions options)
-    : options_(options), threads_(resolve_threads(options.threads, kMaxThreads)) {
+    : options_(options), thread_count_(options.threads, kMaxThreads, w.size()), threads_(thread_count_.count()) {
   // A double is m·2^e with m odd (detail::dyadic). With K = max(0, max −e) over every field, L = 2^K, and each
   // scaled field is 60·m·2^(e+K) (positions, radii) or m·2^(e+K) (velocities). When all of them and D fit in
   // kNarrowBits bits, they are built in __int128 directly; otherwise (subnormals, huge values) through GMP.
@@ -130,7 +130,8 @@ ExactEngine::ExactEngine(const World& w, EngineOptions options)
 }
 
 ExactEngine::ExactEngine(const spec::Sequence& circles, EngineOptions options)
-    : options_(options), threads_(resolve_threads(options.threads, kMaxThreads)) {
+    : options_(options), thread_count_(options.threads, kMaxThreads, circles.size()),
+      threads_(thread_count_.count()) {
   from_rationals(circles);
 }
 
@@ -262,6 +263,7 @@ ExactEngine::Columns<To> ExactEngine::converted(const Columns<From>& s) {
 }
 
 void ExactEngine::step() {
+  threads_ = thread_count_.next();
   if (narrow() && stats_.steps >= proven_until_) {
     std::visit([this](auto& s) { settle(s, pending_); }, state_);  // the proof measures every position
     choose_width();

@@ -55,6 +55,9 @@ class ExactEngine {
   // What the steps did and skipped, as the double engine counts it (impl/pair_list.hpp).
   const EngineStats& stats() const noexcept { return stats_; }
   unsigned threads() const noexcept { return threads_; }
+  // How threads() is chosen: as asked, or for EngineOptions::threads 0 from the machine's load, read again
+  // during the run (impl/threads.hpp).
+  const ThreadCount& thread_count() const noexcept { return thread_count_; }
   std::size_t size() const noexcept { return radius_.size(); }
   // The integers' width: 64 or 128 (fixed, proven to hold the state until the next proof), 0 for GMP.
   unsigned width() const noexcept;
@@ -155,6 +158,7 @@ class ExactEngine {
   // one move, x ← RN(x + wx); error_bound_ grows by the walk's error (exact::walked, impl/exact_bounds.hpp).
   void walk();
   EngineOptions options_;
+  ThreadCount thread_count_;
   unsigned threads_ = 1;
   EngineStats stats_;
   std::variant<Columns<exact::Word>, Columns<exact::Narrow>, Columns<exact::Wide>> state_;

@@ -172,6 +172,8 @@ const char* name(Family family) {
   return "?";
 }
 
+void showValue(Family family, std::ostream& os) { os << name(family); }
+
 std::span<const Family> families(Profile profile) {
   if (profile == Profile::literal) return kLiteral;
   return kAll;

@@ -15,6 +15,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <ostream>
 #include <span>
 #include <string>
 #include <string_view>
@@ -73,6 +74,8 @@ enum class Family {
 
 // A short name, for reports and RC_TAG: "tangency", "tie-p-vx", "square-overflow".
 const char* name(Family family);
+// How RapidCheck shows a family in a counterexample (a value of gen::boundary_case, say): by its name.
+void showValue(Family family, std::ostream& os);
 
 // The families a profile draws from, in the order above: all of them for resolved; literal leaves out
 // duplicates and zero_radius, which are outside its domain.

@@ -7,6 +7,7 @@
 #include "spec/oracle.hpp"
 
 #include <rapidcheck.h>
+#include <rapidcheck/detail/Results.h>
 
 #include <algorithm>
 #include <bit>
@@ -14,6 +15,8 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <ostream>
+#include <sstream>
 #include <stdexcept>
 #include <vector>
 
@@ -71,6 +74,44 @@ std::string hex(double x) {
   std::snprintf(text, sizeof text, "%a", x);
   return text;
 }
+
+// The shortest decimal that reads back as x ("0.1", "-0", "5e-324"), which C++ and JSON read alike.
+std::string shortest(double x) {
+  char text[32];
+  return std::string(text, std::to_chars(text, text + sizeof text, x).ptr);
+}
+
+// "{px, py, vx, vy, r}" and "{{...}, {...}}": a circle and a world as C++ initializers of CircleDoubles and Circles.
+std::string circle_text(const spec::CircleDoubles& c) {
+  std::string text = "{";
+  for (std::size_t f = 0; f < c.size(); ++f) text += (f == 0 ? "" : ", ") + shortest(c[f]);
+  return text + "}";
+}
+std::string world_text(const Circles& w) {
+  std::string text = "{";
+  for (std::size_t k = 0; k < w.size(); ++k) text += (k == 0 ? "" : ", ") + circle_text(w[k]);
+  return text + "}";
+}
+
+// A failure of the property with `message` alone as its description (RC_FAIL would add our file, line and
+// source text).
+[[noreturn]] void fail(std::string message) {
+  throw rc::detail::CaseResult(rc::detail::CaseResult::Type::Failure, std::move(message));
+}
+
+}  // namespace
+
+// A case of step_conforms, which RapidCheck shows in a counterexample under this type's name: its own form of a
+// double has 6 significant digits, which cannot reproduce a world of ulps.
+struct StepConformsCase {
+  Family family;
+  Circles world;
+};
+void showValue(const StepConformsCase& c, std::ostream& os) {
+  os << name(c.family) << ", w_0 = " << world_text(c.world);
+}
+
+namespace {
 
 // The most circles expected_step steps with step_all_pairs; above, with the double engine, whose set-up costs
 // more than testing the 2016 pairs of 64 circles.
@@ -151,25 +192,50 @@ std::optional<Difference> compare(const Circles& input, const Circles& expected,
 }
 
 void step_conforms(const Step& step, const Options& options) {
-  const auto [family, w_0] = *gen::boundary_case(options.profile);
+  const StepConformsCase drawn = *rc::gen::map(gen::boundary_case(options.profile), [](std::pair<Family, Circles> c) {
+    return StepConformsCase{c.first, std::move(c.second)};
+  });
+  const Family family = drawn.family;  // a variable, not a structured binding: the lambdas below capture it
   RC_TAG(name(family));
-  Chain chain(w_0, std::max(options.steps, steps_to_decide(family)), options.level);
+  Chain chain(drawn.world, std::max(options.steps, steps_to_decide(family)), options.level);
+  // "step 2 of 3 (family tangency, resolved profile, level exact)"
+  const auto which = [&](std::uint64_t s) {
+    return "step " + std::to_string(s) + " of " + std::to_string(chain.steps()) + " (family " + name(family) + ", " +
+           name(options.profile) + " profile, level " + options.level.text() + ")";
+  };
+  const auto asked = [](std::uint64_t s, const Circles& w) {
+    return "the world asked at step " + std::to_string(s) + ", w_" + std::to_string(s - 1) + " = " + world_text(w);
+  };
   while (chain.going()) {
     auto expected = expected_step(chain.input(), options.profile);
     if (!std::holds_alternative<Circles>(expected)) return;
     Circles actual = step(chain.input());
     if (actual.size() != chain.input().size())
-      RC_FAIL("step " + std::to_string(chain.step() + 1) + ": asked " + std::to_string(chain.input().size()) +
-              " circles, answered " + std::to_string(actual.size()));
+      fail(which(chain.step() + 1) + ": asked " + std::to_string(chain.input().size()) + " circles, answered " +
+              std::to_string(actual.size()) + "\n" + asked(chain.step() + 1, chain.input()));
     if (!chain.judge(std::move(actual), std::move(std::get<Circles>(expected)))) {
       const ChainFailure& f = *chain.failure();
       const Difference& d = f.difference;
-      RC_LOG() << "family " << name(family) << ", step " << f.step << " of " << f.steps << ", "
-               << name(options.profile) << " profile, level " << options.level.text() << "\n";
-      RC_FAIL("circle " + std::to_string(d.circle) + ", field " + spec::name(d.field) + ": expected " +
-              hex(d.expected) + ", got " + hex(d.actual) + "; which decision: " + d.decision);
+      fail(which(f.step) + ": circle " + std::to_string(d.circle) + ", field " + spec::name(d.field) + ": expected " +
+              hex(d.expected) + " (" + shortest(d.expected) + "), got " + hex(d.actual) + " (" + shortest(d.actual) +
+              "); which decision: " + d.decision + "\n" + asked(f.step, f.input) + "\ncircle " +
+              std::to_string(d.circle) + ": expected " + circle_text(f.expected[d.circle]) + ", got " +
+              circle_text(f.actual[d.circle]));
     }
   }
+}
+
+std::optional<std::string> find_counterexample(const Step& step, const Options& options) {
+  const rc::detail::TestResult result = rc::detail::checkTestable([&] { step_conforms(step, options); });
+  std::ostringstream report;
+  rc::detail::FailureResult failure;
+  if (result.match(failure)) {
+    rc::detail::printResultMessage(failure, report);
+    return report.str();
+  }
+  if (rc::detail::SuccessResult success; result.match(success)) return std::nullopt;
+  rc::detail::printResultMessage(result, report);
+  throw std::runtime_error("find_counterexample: RapidCheck did not finish the property: " + report.str());
 }
 
 }  // namespace circles::properties

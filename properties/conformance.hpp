@@ -66,9 +66,24 @@ struct Options {
 
 // The property body: draws a family of `options.profile` and a world of it (gen::boundary_case), tags the case
 // with the family's name (RC_TAG), steps it `options.steps` times with `step` (steps_to_decide(family) times
-// if more: twice for tangent-after-step, whose tangency is in w_1) and fails (RC_FAIL, with the circle, the
-// field, expected and actual) at the first answer of the wrong length or that differs from expected_step of its
-// input at `options.level`. A world whose next step has no answer ends the chain there.
+// if more: twice for tangent-after-step, whose tangency is in w_1) and fails (RC_FAIL) at the first answer of
+// the wrong length or that differs from expected_step of its input at `options.level`. A world whose next step
+// has no answer ends the chain there. RapidCheck's report of a failure shows the case as
+//   tangency, w_0 = {{0, 0, 60, 0, 1}, {2, 0, -60, 0, 1}}
+// (the family, and w_0 with every number in the shortest form that reads back as the same double), and the
+// failure as
+//   step 1 of 1 (family tangency, resolved profile, level exact): circle 0, field vx: expected -0x1.ep+5 (-60),
+//   got 0x1.ep+5 (60); which decision: the intersect test (3) (...): circle 0 touches circle 1 but kept its own
+//   velocity
+//   the world asked at step 1, w_0 = {{0, 0, 60, 0, 1}, {2, 0, -60, 0, 1}}
+//   circle 0: expected {1, 0, -60, 0, 1}, got {1, 0, 60, 0, 1}
+// where the world asked is the one of the step that failed: w_1 at step 2 of a chain.
 void step_conforms(const Step& step, const Options& options = {});
+
+// Runs step_conforms(step, options) as a RapidCheck property, as RC_GTEST_PROP would (RapidCheck's configuration,
+// RC_PARAMS), and returns RapidCheck's report of the shrunk counterexample if it fails (the report above, after
+// how many cases passed), or nothing if every case passes: for a test that requires a wrong step to be caught,
+// instead of failing. Throws std::runtime_error if RapidCheck gives up or cannot run the property.
+std::optional<std::string> find_counterexample(const Step& step, const Options& options = {});
 
 }  // namespace circles::properties

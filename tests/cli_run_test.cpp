@@ -23,7 +23,6 @@
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <thread>
 #include <vector>
 
 namespace circles::cli {
@@ -211,11 +210,14 @@ TEST(run, summarizes_steps_circles_engine_threads_and_time) {
   result.stepping = std::chrono::duration<double>(2e-6);
   const auto summary = [&](const char* name, unsigned threads, const std::string& trace) {
     std::ostringstream out;
+    result.threads.reset();
+    if (engine(name).threaded) result.threads.emplace(threads, max_threads(), 5);
     print_summary(result, 5, RunOptions{4, &engine(name), threads, trace}, out);
     return out.str();
   };
+  // --threads 0 on a world of 5 circles: one thread, which is all such a world uses.
   EXPECT_EQ(summary("double", 0, "t.jsonl"),
-            "4 steps of 5 circles with the double engine (all cores): 0.000002 s stepping, 100 ns per circle-step\n"
+            "4 steps of 5 circles with the double engine (1 thread): 0.000002 s stepping, 100 ns per circle-step\n"
             "trace: t.jsonl (w_0 to w_4, 5 lines)\n");
   EXPECT_EQ(summary("double", 3, ""),
             "4 steps of 5 circles with the double engine (3 threads): 0.000002 s stepping, 100 ns per circle-step\n");
@@ -283,9 +285,14 @@ TEST(run, prints_stats_one_figure_a_line_leaving_out_what_does_not_apply) {
             "trace: 0.5 s (209000000 bytes, 418 MB/s)\ntotal: 2 s\n");
   options.engine = &engine("double");
   options.threads = 0;
-  EXPECT_TRUE(stats(options).find("\nthreads: " + std::to_string(std::clamp(std::thread::hardware_concurrency(), 1u,
-                                                                             max_threads())) +
-                                  " (all cores)\n") != std::string::npos);
+  result.threads.emplace(0, max_threads(), 5);
+  EXPECT_NE(stats(options).find("\nthreads: 1 (a world of fewer than 8192 circles runs on one)\n"), std::string::npos);
+  // A big world's count is chosen from the machine's load, which the line gives.
+  result.threads.emplace(0, max_threads(), 10'000);
+  const std::string chosen = "\nthreads: " + std::to_string(result.threads->count()) + " (chosen from the load: " +
+                             std::to_string(result.threads->load()->cores);
+  EXPECT_NE(stats(options).find(chosen), std::string::npos) << stats(options);
+  result.threads.reset();
   result.steps = 0;
   EXPECT_EQ(stats(RunOptions{0, &engine("exact"), 2, ""}),
             "steps: 0\ncircles: 5\nengine: exact\nthreads: 2\nstepping: 0.000002 s\ntotal: 2 s\n");
