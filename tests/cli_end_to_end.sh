@@ -172,7 +172,7 @@ main_job_exits_0_with_every_engine_in_agreement)
     fail "circle 9's doubles: $(grep '^    9 ' "$dir/out")"
   # One step, said in the singular, and times in plain decimals (no "5.6454e-05 s").
   "$circles" run --steps 1 --trace "$dir/t.jsonl" >"$dir/out"
-  grep -Eqx 'circles run: the embedded default scene: 1 step of 10 circles with the double engine \(all cores\): 0\.[0-9]+ s stepping, [0-9.]+ ns per circle-step' "$dir/out" ||
+  grep -Eqx 'circles run: the embedded default scene: 1 step of 10 circles with the double engine \(1 thread\): 0\.[0-9]+ s stepping, [0-9.]+ ns per circle-step' "$dir/out" ||
     fail "run's summary of one step: $(cat "$dir/out")"
   "$circles" check-trace "$dir/t.jsonl" >"$dir/out"
   grep -q "^circles check-trace: $dir/t.jsonl: agrees with the correctly rounded step at its one step (steps 0 to 1, 10 circles)" "$dir/out" ||
