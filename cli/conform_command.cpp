@@ -251,16 +251,18 @@ int conform_command(const ConformCommandOptions& given, std::ostream& out, std::
     return 2;
   }
   if (expectations) conform::apply(verdict, *expectations);
+  // The ^C a terminal echoed after the progress line goes before the verdict.
+  if (verdict.outcome == Outcome::interrupted && given.progress) err << "\r\x1b[K";
   const int status = print_verdict(verdict, given.svg, out, err);
-  if (expectations && verdict.outcome != Outcome::cannot_check)
+  if (expectations && conform::judged(verdict.outcome))
     for (const std::string& line : conform::unexpected_passes(verdict, *expectations)) out << line << "\n";
   // The reports for CI, for every verdict; a report that cannot be written makes the run's status 2.
   const std::string text = counterexample_text(verdict);
   try {
     if (!given.report.empty()) write_report(given.report, "--report", json_report(verdict, text));
     if (!given.junit.empty()) write_report(given.junit, "--junit", junit_report(verdict, text));
-    // The expectation file of a run that could check, whole or not at all.
-    if (!given.write_expect.empty() && verdict.outcome != Outcome::cannot_check) {
+    // The expectation file of a run that judged the candidate, whole or not at all.
+    if (!given.write_expect.empty() && conform::judged(verdict.outcome)) {
       write_report(given.write_expect, "--write-expect", conform::expectations_text(verdict));
       out << "expectations: " << given.write_expect << "\n";
     }

@@ -248,7 +248,7 @@ std::filesystem::path picture_path(const Verdict& verdict, const std::filesystem
 }
 
 int print_verdict(const Verdict& verdict, const std::filesystem::path& svg, std::ostream& out, std::ostream& err) {
-  if (verdict.options.keep_going && verdict.outcome != Outcome::cannot_check) {
+  if (verdict.options.keep_going && conform::judged(verdict.outcome)) {
     print_table(verdict, out);
     if (verdict.counterexample) draw_picture(verdict, svg, out);  // of the first unexpected failure
     return verdict.outcome == Outcome::conforms ? 0 : 1;
@@ -260,6 +260,14 @@ int print_verdict(const Verdict& verdict, const std::filesystem::path& svg, std:
     case Outcome::does_not_conform:
       print_counterexample(verdict, svg, out);
       return 1;
+    case Outcome::interrupted:
+      // A counterexample found before the signal (shrunk as far as the signal let it), then the cases checked
+      // and the seed, so that nothing is lost: the same cases can be checked again.
+      if (verdict.counterexample) print_counterexample(verdict, svg, out);
+      err << "circles conform: " << verdict.error << " after " << counted(verdict.checked(), "case")
+          << (verdict.counterexample ? ", while shrinking its counterexample" : "") << " (seed "
+          << verdict.options.seed << ")\nto check the same cases again: " << verdict.rerun << "\n";
+      return 128 + verdict.signal;
     case Outcome::cannot_check:
       break;
   }

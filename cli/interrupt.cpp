@@ -15,8 +15,14 @@ namespace {
 constexpr std::array<std::pair<int, const char*>, 3> kSignals{{{SIGINT, "SIGINT"}, {SIGTERM, "SIGTERM"}, {SIGHUP, "SIGHUP"}}};
 std::array<std::string, kSignals.size()> messages;
 std::atomic_flag ending = ATOMIC_FLAG_INIT;
+std::atomic_flag winding_down = ATOMIC_FLAG_INIT;
+void (*wind_down_on_first)(int) noexcept = nullptr;
 
 void end(int signal) {
+  if (wind_down_on_first && !winding_down.test_and_set()) {
+    wind_down_on_first(signal);
+    return;
+  }
   if (ending.test_and_set()) return;  // a second signal, maybe on another thread: the first ends the program
   formats::remove_temporary_files();
   for (std::size_t k = 0; k < kSignals.size(); ++k)
@@ -31,7 +37,8 @@ void end(int signal) {
 
 }  // namespace
 
-void end_cleanly_on_interrupt(const std::string& command) {
+void end_cleanly_on_interrupt(const std::string& command, void (*wind_down)(int) noexcept) {
+  wind_down_on_first = wind_down;
   // "\r" and ESC [K, erase to the end of the line: a progress line (or the ^C a terminal echoes) goes first. On a
   // terminal only: a file or a pipe gets the message alone.
   const std::string erase = isatty(STDERR_FILENO) ? "\r\x1b[K" : "";

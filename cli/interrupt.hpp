@@ -14,6 +14,9 @@
 namespace circles::cli {
 
 // Installs the handler for SIGINT, SIGTERM and SIGHUP; `command` ("circles run") opens its message.
-void end_cleanly_on_interrupt(const std::string& command);
+// With `wind_down` (conform::interrupt, for `circles conform`), the first signal calls it instead, and the
+// command ends itself as it says (stopping its programs, writing its reports); a second signal ends it at once.
+// `wind_down` runs in a signal handler: it must be async-signal-safe.
+void end_cleanly_on_interrupt(const std::string& command, void (*wind_down)(int) noexcept = nullptr);
 
 }  // namespace circles::cli

@@ -16,6 +16,7 @@
 #include "cli/usage.hpp"
 #include "cli/vectors.hpp"
 #include "cli/version.hpp"
+#include "conform/interrupt.hpp"
 #include "engines/registry.hpp"
 #include "formats/output_file.hpp"
 #include "formats/scene.hpp"
@@ -93,8 +94,9 @@ std::optional<int> parse(CLI::App& app, Commands& c, int argc, char** argv) {
 }
 
 // The command parsed, run. A progress line or bar only on a terminal, always on stderr: output to a pipe, a file
-// or CI stays free of it, and stdout holds only what the command says. Every command but conform (whose run
-// loop stops its candidate itself) and serve ends on SIGINT, SIGTERM and SIGHUP as cli/interrupt.hpp says.
+// or CI stays free of it, and stdout holds only what the command says. Every command but serve ends on SIGINT,
+// SIGTERM and SIGHUP as cli/interrupt.hpp says; conform's first signal stops its candidates and reports the
+// cases checked (conform/interrupt.hpp), and a second ends it at once.
 int dispatch(CLI::App& app, Commands& c) {
   if (*c.help) return help_command(app, c.help_topic, std::cout, std::cerr);
   if (*c.families) {
@@ -122,6 +124,7 @@ int dispatch(CLI::App& app, Commands& c) {
       return 2;
     }
     const bool stdout_taken = any_is_standard_output({o.report, o.junit, o.svg, o.write_expect});
+    end_cleanly_on_interrupt("circles conform", circles::conform::interrupt);
     return conform_command(c.conform_options, stdout_taken ? std::cerr : std::cout, std::cerr);
   }
   const CLI::App* command = &app;  // the command parsed, "circles report merge" for one

@@ -49,7 +49,8 @@ int merge_command(const std::string& out, const std::vector<std::string>& report
     switch (v.outcome) {
       case conform::Outcome::conforms: return 0;
       case conform::Outcome::does_not_conform: return 1;
-      case conform::Outcome::cannot_check: break;
+      case conform::Outcome::cannot_check:
+      case conform::Outcome::interrupted: break;
     }
   } catch (const conform::ReportError& e) {
     err << "circles report merge: " << e.what() << "\n";

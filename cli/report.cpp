@@ -41,9 +41,12 @@ std::string junit_report(const Verdict& v, const std::string& text) {
     } else if (f.status == FamilyStatus::skipped) {
       ++skipped;
       cases += "      <skipped message=\"skipped: left out by --families or --skip-families\"/>\n";
-    } else if (v.outcome == conform::Outcome::cannot_check && f.checked == 0) {
+    } else if ((v.outcome == conform::Outcome::cannot_check && f.checked == 0) || v.outcome == conform::Outcome::interrupted) {
+      // A run that could not check: an error in each family it did not check. A run that a signal interrupted
+      // checked no family to its share of the cases: an error in each that did not fail.
       ++errors;
-      cases += "      <error type=\"cannot check\" message=\"" + xml(v.error) + "\">" + xml(v.error) + "</error>\n";
+      cases += "      <error type=\"" + std::string(name(v.outcome)) + "\" message=\"" + xml(v.error) + "\">" + xml(v.error) +
+               "</error>\n";
     } else if (f.status == conform::FamilyStatus::not_reached) {
       ++skipped;
       cases += "      <skipped message=\"not reached: the run stopped at its counterexample\"/>\n";

@@ -1,5 +1,6 @@
 #include "conform/candidate.hpp"
 
+#include "conform/interrupt.hpp"
 #include "conform/replay.hpp"
 #include "formats/json_number.hpp"
 
@@ -7,6 +8,7 @@
 #include <cerrno>
 #include <csignal>
 #include <cstring>
+#include <limits>
 #include <string_view>
 #include <thread>
 
@@ -55,6 +57,7 @@ ProcessCandidate::ProcessCandidate(std::string command, std::chrono::millisecond
 }
 
 void ProcessCandidate::start() {
+  throw_if_interrupted();  // no program is started once the check is ending
   int in[2], out[2];
   if (pipe2(in, O_CLOEXEC) != 0) throw BrokenCandidate(system_error("cannot create a pipe"));
   if (pipe2(out, O_CLOEXEC) != 0) {
@@ -74,10 +77,20 @@ void ProcessCandidate::start() {
   sigaddset(&defaults, SIGPIPE);
   posix_spawnattr_setsigdefault(&attributes, &defaults);
   posix_spawnattr_setpgroup(&attributes, 0);
-  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGDEF);
+  // The signals that interrupt a check are held from before the program starts until its group is tracked, so
+  // that interrupt() cannot fire between the two and miss the group; the program gets the mask we had.
+  sigset_t ending, before;
+  sigemptyset(&ending);
+  for (const int signal : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&ending, signal);
+  pthread_sigmask(SIG_BLOCK, &ending, &before);
+  posix_spawnattr_setsigmask(&attributes, &before);
+  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSIGMASK);
   std::string shell = "/bin/sh", dash_c = "-c";
   char* argv[] = {shell.data(), dash_c.data(), command_.data(), nullptr};
   const int spawned = posix_spawn(&pid_, "/bin/sh", &actions, &attributes, argv, environ);
+  // A full table leaves the group to kill_group, when the check sees the interruption.
+  if (spawned == 0) track_group(pid_);
+  pthread_sigmask(SIG_SETMASK, &before, nullptr);
   posix_spawn_file_actions_destroy(&actions);
   posix_spawnattr_destroy(&attributes);
   close(in[0]);
@@ -111,38 +124,56 @@ void ProcessCandidate::restart() {
 void ProcessCandidate::kill_group() noexcept {
   if (pid_ <= 0) return;
   kill(-pid_, SIGKILL);  // the whole group: the shell and whatever it started
+  reap(true);
+  pid_ = -1;
+}
+
+std::optional<int> ProcessCandidate::reap(bool wait) noexcept {
+  // Seen exited but not yet reaped (WNOWAIT), the shell's pid, which is its group's id, cannot be taken by a new
+  // process: the group is untracked and killed while the id is still ours, and only then reaped.
+  siginfo_t info{};
+  int waited;
+  do {
+    waited = waitid(P_PID, static_cast<id_t>(pid_), &info, WEXITED | WNOWAIT | (wait ? 0 : WNOHANG));
+  } while (waited < 0 && errno == EINTR);
+  if (waited < 0 || info.si_pid != pid_) return std::nullopt;
+  untrack_group(pid_);
+  kill(-pid_, SIGKILL);  // the shell has exited; anything it left behind in its group goes too
   int status = 0;
   while (waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
   }
-  pid_ = -1;
+  return status;
 }
 
 std::string ProcessCandidate::exit_status(bool wait) {
   if (pid_ <= 0) return status_;
-  int status = 0;
-  pid_t got;
-  do {
-    got = waitpid(pid_, &status, wait ? 0 : WNOHANG);
-  } while (got < 0 && errno == EINTR);
-  if (got != pid_) return "";
-  // The shell has exited; anything it left behind in its group goes too.
-  kill(-pid_, SIGKILL);
+  const std::optional<int> status = reap(wait);
+  if (!status) return "";
   pid_ = -1;
-  if (WIFEXITED(status)) status_ = "exited with status " + std::to_string(WEXITSTATUS(status));
-  else if (WIFSIGNALED(status)) status_ = "was killed by signal " + std::to_string(WTERMSIG(status));
+  if (WIFEXITED(*status)) status_ = "exited with status " + std::to_string(WEXITSTATUS(*status));
+  else if (WIFSIGNALED(*status)) status_ = "was killed by signal " + std::to_string(WTERMSIG(*status));
   else status_ = "stopped";
   return status_;
 }
 
-std::string ProcessCandidate::read_line(std::uint64_t id, std::chrono::milliseconds deadline) {
+std::string ProcessCandidate::read_line(std::uint64_t id, std::chrono::milliseconds deadline, std::size_t longest) {
   const auto give_up = std::chrono::steady_clock::now() + deadline;
   // buffer_[0, scanned) holds no newline: an answer of megabytes, read 64 KiB at a time, is searched once.
   for (std::size_t scanned = 0;;) {
-    if (const auto newline = buffer_.find('\n', scanned); newline != std::string::npos) {
+    const auto newline = buffer_.find('\n', scanned);
+    // Past `longest`, the line is malformed whatever follows: what we hold stays below longest + one chunk.
+    if (std::min(newline, buffer_.size()) > longest) {
+      kill_group();
+      throw BrokenCandidate(name() + " wrote a malformed answer to request " + std::to_string(id) +
+                            ": the line is longer than " + std::to_string(longest) +
+                            " bytes, more than any answer to its world needs (docs/protocol.md, Limits)");
+    }
+    if (newline != std::string::npos) {
       std::string line = buffer_.substr(0, newline);
       buffer_.erase(0, newline + 1);
       return line;
     }
+    throw_if_interrupted();
     const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(give_up - std::chrono::steady_clock::now());
     if (left.count() <= 0) {
       kill_group();
@@ -158,6 +189,7 @@ std::string ProcessCandidate::read_line(std::uint64_t id, std::chrono::milliseco
     if (got < 0 && errno == EINTR) continue;
     if (got < 0) throw BrokenCandidate(system_error("cannot read the candidate's answer"));
     if (got == 0) {
+      throw_if_interrupted();  // the end of a program that interrupt() killed is not its fault
       const std::string status = exit_status(true);
       throw BrokenCandidate(name() + " " + status + " before answering request " + std::to_string(id) +
                             (buffer_.empty() ? "" : " (it wrote a line without a newline: \"" + buffer_.substr(0, 80) + "\")"));
@@ -175,6 +207,7 @@ void ProcessCandidate::write_requests(std::string_view lines, std::span<const st
     if (wrote < 0 && errno == EINTR) continue;
     if (wrote < 0 && errno != EPIPE) throw BrokenCandidate(system_error("cannot write to the candidate"));
     if (wrote < 0) {
+      throw_if_interrupted();
       // Its input is closed: most likely it exited (then say how, as when its output ends), else it closed it.
       // The request named is the one being written: the first not wholly written.
       const std::size_t at = total - lines.size();
@@ -198,8 +231,13 @@ std::chrono::milliseconds ProcessCandidate::deadline_for(std::chrono::millisecon
   return std::chrono::milliseconds(ms < 1e15 ? static_cast<std::int64_t>(ms) : std::int64_t{1'000'000'000'000'000});
 }
 
+std::size_t ProcessCandidate::longest_answer(std::size_t circles) {
+  constexpr std::size_t most = std::numeric_limits<std::size_t>::max();
+  return circles > (most - kAnswerSlack) / kCircleBytes ? most : kAnswerSlack + circles * kCircleBytes;
+}
+
 Circles ProcessCandidate::read_answer(const Circles& world, std::uint64_t id) {
-  std::string text = read_line(id, deadline_for(deadline_, world.size()));
+  std::string text = read_line(id, deadline_for(deadline_, world.size()), longest_answer(world.size()));
   ++lines_;
   Line line;
   try {
@@ -224,6 +262,7 @@ std::vector<Circles> Answers::all() && {
 }
 
 Answers Candidate::answer_all(std::span<const Circles> worlds, std::uint64_t first_id) {
+  throw_if_interrupted();
   Answers read;
   read.answers.reserve(worlds.size());
   try {

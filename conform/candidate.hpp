@@ -5,7 +5,8 @@
 //                     batch of them at a time, so that a batch shares one round trip through the pipes), read
 //                     one answer line at a time from its stdout, in order, with a deadline per request.
 //                     It runs in a process group of its own, which is killed when the candidate is destroyed,
-//                     so no process outlives the check, whatever the program does. After a fault (a crash, a
+//                     so no process outlives the check, whatever the program does; a signal that interrupts
+//                     the check kills it at once (conform/interrupt.hpp). After a fault (a crash, a
 //                     hang, a malformed line, a wrong id or count), the next answer_all starts the program
 //                     afresh, so that no answer it wrote to an earlier request is read as another's.
 #pragma once
@@ -122,6 +123,20 @@ class ProcessCandidate : public Candidate {
   // are four times as long as the requests. A request longer than the bound goes alone, as it always did.
   static constexpr std::size_t kBatchBytes = 16 * 1024;
 
+  // The longest answer line read for a world of n circles, kAnswerSlack + n · kCircleBytes bytes; a longer one is
+  // malformed as soon as it passes the bound, so conform holds at most that much of a line, whatever a program
+  // writes (docs/protocol.md, Limits).
+  //   kNumberBytes: the longest spelling of a double without an exponent or a superfluous digit is its exact
+  //     decimal value written out, at most a sign, "0.", and the 1,074 places of a subnormal (2^-1074 =
+  //     5^1074 / 10^1074): 1,077 bytes. 1,100 leaves room for an exponent or a few trailing zeros.
+  //   kCircleBytes: five numbers, plus 100 bytes for the brackets, the four commas, the comma between circles
+  //     and the whitespace around them.
+  //   kAnswerSlack: the id (at most 20 digits), the keys, and the unknown keys a newer program may add.
+  static constexpr std::size_t kNumberBytes = 1100;
+  static constexpr std::size_t kCircleBytes = 5 * kNumberBytes + 100;
+  static constexpr std::size_t kAnswerSlack = 64 * 1024;
+  static std::size_t longest_answer(std::size_t circles);
+
  private:
   // Starts the program (throws BrokenCandidate if it cannot); stops it, and closes its pipes; both.
   void start();
@@ -130,8 +145,9 @@ class ProcessCandidate : public Candidate {
   // answer_all's work: appends the answer to each of worlds, in batches of at most kBatchBytes; throws
   // BrokenCandidate at the first request without an answer.
   void answer_batches(std::span<const Circles> worlds, std::uint64_t first_id, std::vector<Circles>& answers);
-  // The next line the program writes, without its newline, or BrokenCandidate at the deadline or at EOF.
-  std::string read_line(std::uint64_t id, std::chrono::milliseconds deadline);
+  // The next line the program writes, without its newline, or BrokenCandidate at the deadline, at EOF or as
+  // soon as the line is longer than `longest` bytes.
+  std::string read_line(std::uint64_t id, std::chrono::milliseconds deadline, std::size_t longest);
   // "exited with status 3", "was killed by signal 11", or "" while it runs.
   std::string exit_status(bool wait);
   // Writes all of `lines`, the requests first_id, first_id + 1, … (`ends` holds the offset just past each).
@@ -139,6 +155,9 @@ class ProcessCandidate : public Candidate {
   // Reads the answer to request `id` about `world` and checks its id and length.
   Circles read_answer(const Circles& world, std::uint64_t id);
   void kill_group() noexcept;
+  // The program's exit status once it has exited (waiting for that if `wait`), its group untracked and killed
+  // first; nothing while it runs.
+  std::optional<int> reap(bool wait) noexcept;
 
   std::string command_;
   std::chrono::milliseconds deadline_;

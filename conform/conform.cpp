@@ -212,16 +212,19 @@ const char* name(Outcome outcome) {
   switch (outcome) {
     case Outcome::conforms: return "conforms";
     case Outcome::does_not_conform: return "does not conform";
+    case Outcome::interrupted: return "interrupted";
     case Outcome::cannot_check: break;
   }
   return "cannot check";
 }
 
 std::optional<Outcome> parse_outcome(std::string_view text) {
-  for (const Outcome o : {Outcome::conforms, Outcome::does_not_conform, Outcome::cannot_check})
+  for (const Outcome o : {Outcome::conforms, Outcome::does_not_conform, Outcome::cannot_check, Outcome::interrupted})
     if (text == name(o)) return o;
   return std::nullopt;
 }
+
+bool judged(Outcome outcome) { return outcome == Outcome::conforms || outcome == Outcome::does_not_conform; }
 
 namespace {
 constexpr FamilyStatus kStatuses[] = {FamilyStatus::passed,         FamilyStatus::failed,  FamilyStatus::expected_failure,
@@ -419,6 +422,7 @@ class Run {
     // --case I replays case I whatever --cases says: the replay line of a report does not repeat it.
     const std::uint64_t end = options_.only_case ? *options_.only_case + 1 : options_.cases;
     for (std::uint64_t c = 0; c < end && (failing.empty() || options_.keep_going); ++c) {
+      throw_if_interrupted();  // between cases too: an engine in process has no request to notice it at
       const rc::Random random = stream.split();  // case c's stream, whichever cases this run checks
       if (options_.only_case ? c != *options_.only_case : (c / F) % options_.shards != options_.shard) continue;
       const std::size_t family = cases_.family(c);
@@ -456,8 +460,7 @@ class Run {
       auto candidates = world.shrinks();
       while (auto next = candidates.next()) {
         if (++queries > kMaxShrinkQueries) break;
-        ++counterexample.tries;
-        std::optional<Failure> f = still_fails(next->value(), steps, failure);
+        std::optional<Failure> f = still_fails(next->value(), steps, failure, counterexample.tries);
         if (f) {
           world = *next;
           failure = std::move(*f);
@@ -487,13 +490,19 @@ class Run {
   // The failure of the case chained `steps` steps from w, if it fails with the same kind of value as `failure`
   // (same_kind); nothing if it passes, fails otherwise, or breaks the candidate (a world on which the candidate
   // crashes, hangs or writes a malformed line does not show the wrong answer being shrunk; the next world is
-  // asked of the program started afresh).
-  std::optional<Failure> still_fails(const Circles& w, std::uint64_t steps, const Failure& failure) {
+  // asked of the program started afresh). Once a signal has interrupted the check, no world is asked: the
+  // counterexample is the world shrunk so far, reported with the interruption. `tries` counts the worlds asked.
+  std::optional<Failure> still_fails(const Circles& w, std::uint64_t steps, const Failure& failure,
+                                     std::uint64_t& tries) {
+    if (interruption()) return std::nullopt;
+    ++tries;
     Ending e = Ending::checked;
     std::optional<Failure> f;
     try {
       f = checker_.run(w, steps, e);
     } catch (const BrokenCandidate&) {
+      return std::nullopt;
+    } catch (const Interrupted&) {
       return std::nullopt;
     }
     if (f && same_kind(*f, failure)) return f;
@@ -515,8 +524,7 @@ class Run {
         Circles rest(world.begin(), world.begin() + static_cast<std::ptrdiff_t>(from));
         rest.insert(rest.end(), world.begin() + static_cast<std::ptrdiff_t>(to), world.end());
         ++queries;
-        ++counterexample.tries;
-        if (auto f = still_fails(rest, steps, failure)) {
+        if (auto f = still_fails(rest, steps, failure, counterexample.tries)) {
           world = std::move(rest);
           failure = std::move(*f);
           counterexample.shrink_path.push_back(world);
@@ -541,12 +549,11 @@ class Run {
         for (std::size_t f = 0; f < 5; ++f)
           for (const double y : simpler_values(world[k][f])) {
             if (++queries > kMaxSimplifyQueries) return;
-            ++counterexample.tries;
             Circles simpler = world;
             simpler[k][f] = y;
             // The same failure, made simpler: at the same step, in the same field (a stateful candidate may
             // fail otherwise on a world that happens to equal one of its earlier answers), of the same kind.
-            std::optional<Failure> still = still_fails(simpler, steps, failure);
+            std::optional<Failure> still = still_fails(simpler, steps, failure, counterexample.tries);
             if (!still || still->step != failure.step || still->difference.field != failure.difference.field)
               continue;
             world = std::move(simpler);
@@ -613,19 +620,34 @@ Verdict check(Candidate& candidate, const Options& options) {
   bool could_check = true;
   try {
     Run(candidate, options, verdict)();
-  } catch (const BrokenCandidate& e) {
-    could_check = false;
+  } catch (const Interrupted& e) {
+    verdict.signal = e.signal();
     verdict.error = e.what();
+  } catch (const BrokenCandidate& e) {
+    // A fault that a signal caused (interrupt() killed the program) is the interruption, not the program's.
+    if (const int signal = interruption()) {
+      verdict.signal = signal;
+      verdict.error = Interrupted(signal).what();
+    } else {
+      could_check = false;
+      verdict.error = e.what();
+    }
   } catch (const ConformError& e) {
     could_check = false;
     verdict.error = e.what();
+  }
+  // A signal while a counterexample was shrunk ends the shrinking, not the run: the run is interrupted all the same.
+  if (const int signal = interruption(); signal && !verdict.signal) {
+    verdict.signal = signal;
+    verdict.error = Interrupted(signal).what();
   }
   // A family with no checked case did not pass: the run stopped (a counterexample, a fault) before it, or
   // replayed one case or the corpus alone.
   for (FamilyResult& f : verdict.families)
     if (std::find(options.skip.begin(), options.skip.end(), f.family) != options.skip.end()) f.status = FamilyStatus::skipped;
     else if (f.status != FamilyStatus::failed) f.status = f.checked > 0 ? FamilyStatus::passed : FamilyStatus::not_reached;
-  verdict.outcome = could_check ? checked_outcome(verdict) : Outcome::cannot_check;
+  verdict.outcome = verdict.signal ? Outcome::interrupted : could_check ? checked_outcome(verdict) : Outcome::cannot_check;
+  if (verdict.signal) verdict.rerun = rerun_command(candidate.option(), options);
   verdict.elapsed = std::chrono::steady_clock::now() - start;
   return verdict;
 }

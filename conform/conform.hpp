@@ -92,9 +92,13 @@ class ConformError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// The three verdicts, as the report names them: "conforms", "does not conform", "cannot check" (exit 0, 1, 2).
-enum class Outcome { conforms, does_not_conform, cannot_check };
+// The verdicts, as the report names them: "conforms", "does not conform", "cannot check" (exit 0, 1, 2), and
+// "interrupted" (exit 128 + the signal): a signal ended the check (conform/interrupt.hpp) before its last case.
+enum class Outcome { conforms, does_not_conform, cannot_check, interrupted };
 const char* name(Outcome outcome);
+// Whether the run judged the candidate: conforms or does not conform. Expectations and the families' table
+// apply to such a verdict only.
+bool judged(Outcome outcome);
 // The outcome of that name; nothing for another text.
 std::optional<Outcome> parse_outcome(std::string_view text);
 
@@ -156,7 +160,10 @@ struct Verdict {
   // The run's first counterexample (the lowest case; a stored one first), set when a family failed. With
   // --keep-going each failing family has its own in FamilyResult::counterexample.
   std::optional<Counterexample> counterexample;
-  std::string error;                             // why, when the outcome is cannot_check
+  std::string error;                             // why, when the outcome is cannot_check or interrupted
+  int signal = 0;                                // the signal, when the outcome is interrupted
+  // When the outcome is interrupted, the command that checks the same cases again (conform/replay.hpp).
+  std::string rerun{};
   std::chrono::duration<double> elapsed{};       // wall time of the check
   // The shards a verdict merged from their reports combines (conform/merge.hpp), in order; empty for a run's
   // own verdict, whose shard is options.shard.
@@ -182,7 +189,10 @@ std::vector<Circles> case_worlds(std::uint64_t seed, std::uint64_t cases, Profil
 Verdict unchecked(std::string candidate, const Options& options, std::string error);
 
 // Checks `candidate`. A candidate that breaks (BrokenCandidate), a corpus file that cannot be replayed and a
-// family of which no case was checked give the verdict cannot_check, with the reason in `error`. Throws
+// family of which no case was checked give the verdict cannot_check, with the reason in `error`. A signal
+// recorded by interrupt() (conform/interrupt.hpp) stops the check at its next request or case with the verdict
+// interrupted: the cases counted are those checked, the families not reached are marked so, and `rerun` says
+// how to check the same cases again. Throws
 // ConformError only for a --save directory that cannot be used, before any case runs.
 Verdict check(Candidate& candidate, const Options& options);
 

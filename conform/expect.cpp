@@ -106,7 +106,7 @@ void apply(Verdict& verdict, const Expectations& expectations) {
   if (first) reported = *first;
   verdict.counterexample = std::move(reported);
   mark_counterexample_family(verdict);
-  if (verdict.outcome != Outcome::cannot_check) verdict.outcome = checked_outcome(verdict);
+  if (judged(verdict.outcome)) verdict.outcome = checked_outcome(verdict);
 }
 
 std::vector<std::string> unexpected_passes(const Verdict& verdict, const Expectations& expectations) {

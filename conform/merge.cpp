@@ -3,6 +3,7 @@
 #include "formats/json_world.hpp"  // json_string
 
 #include <algorithm>
+#include <optional>
 #include <set>
 #include <utility>
 
@@ -83,8 +84,10 @@ Report merged_report(const std::vector<std::string>& texts, const std::vector<st
   std::vector<Report> reports = read_reports(texts, names);
   Report merged = std::move(reports.front());
   Verdict& m = merged.verdict;
-  bool cannot_check = m.outcome == Outcome::cannot_check;
-  if (!cannot_check) m.error.clear();
+  // Not judged: a shard that could not check makes the merged run so, else one that a signal interrupted.
+  std::optional<Outcome> unjudged;
+  if (!judged(m.outcome)) unjudged = m.outcome;
+  else m.error.clear();
   m.merged_shards = {m.options.shard};
   for (std::size_t k = 1; k < reports.size(); ++k) {
     Verdict& v = reports[k].verdict;
@@ -94,8 +97,8 @@ Report merged_report(const std::vector<std::string>& texts, const std::vector<st
     m.cut_short += v.cut_short;
     m.replayed = std::max(m.replayed, v.replayed);  // each shard replays the same corpus
     m.elapsed += v.elapsed;
-    if (v.outcome == Outcome::cannot_check && !cannot_check) {
-      cannot_check = true;
+    if (!judged(v.outcome) && (!unjudged || (*unjudged == Outcome::interrupted && v.outcome == Outcome::cannot_check))) {
+      unjudged = v.outcome;
       m.error = v.error;
     }
     if (take_first_found(m.counterexample, v.counterexample)) merged.text = std::move(reports[k].text);
@@ -103,7 +106,7 @@ Report merged_report(const std::vector<std::string>& texts, const std::vector<st
   }
   std::sort(m.merged_shards.begin(), m.merged_shards.end());
   mark_counterexample_family(m);
-  m.outcome = cannot_check ? Outcome::cannot_check : checked_outcome(m);
+  m.outcome = unjudged ? *unjudged : checked_outcome(m);
   return merged;
 }
 

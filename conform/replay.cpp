@@ -21,24 +21,21 @@ std::string shell_quoted(std::string_view word) {
   return quoted;
 }
 
-std::string replay_command(std::string_view candidate, const Options& options, std::optional<std::uint64_t> case_index) {
-  std::string command = "circles conform";
-  const auto add = [&command](std::string_view option, std::string_view value) {
-    command.append(" ").append(option);
-    if (!value.empty()) command.append(" ").append(value);
-  };
-  if (!candidate.empty()) add(candidate, "");
-  if (case_index) {
-    add("--seed", std::to_string(options.seed));
-    add("--case", std::to_string(*case_index));
-  } else {
-    add("--save", shell_quoted(options.save.string()));
-    add("--cases", "0");
-  }
-  add("--level", shell_quoted(options.level.text()));
-  if (options.steps > 1) add("--steps", std::to_string(options.steps));
-  if (options.profile == Profile::literal) add("--profile", "literal");
-  if (options.max_circles != properties::kDefaultMaxCircles) add("--max-circles", std::to_string(options.max_circles));
+namespace {
+
+void add(std::string& command, std::string_view option, std::string_view value = "") {
+  command.append(" ").append(option);
+  if (!value.empty()) command.append(" ").append(value);
+}
+
+// The options that choose how a world is judged and which worlds a family draws: the level, the steps, the
+// profile, the largest world, the families checked.
+void add_judging(std::string& command, const Options& options) {
+  add(command, "--level", shell_quoted(options.level.text()));
+  if (options.steps > 1) add(command, "--steps", std::to_string(options.steps));
+  if (options.profile == Profile::literal) add(command, "--profile", "literal");
+  if (options.max_circles != properties::kDefaultMaxCircles)
+    add(command, "--max-circles", std::to_string(options.max_circles));
   if (!options.skip.empty()) {
     std::string checked, skipped;
     for (const properties::Family f : properties::families(options.profile)) {
@@ -47,9 +44,37 @@ std::string replay_command(std::string_view candidate, const Options& options, s
       if (!list.empty()) list.push_back(',');
       list.append(properties::name(f));
     }
-    if (!checked.empty() && checked.size() <= skipped.size()) add("--families", checked);
-    else add("--skip-families", skipped);
+    if (!checked.empty() && checked.size() <= skipped.size()) add(command, "--families", checked);
+    else add(command, "--skip-families", skipped);
   }
+}
+
+}  // namespace
+
+std::string replay_command(std::string_view candidate, const Options& options, std::optional<std::uint64_t> case_index) {
+  std::string command = "circles conform";
+  if (!candidate.empty()) add(command, candidate);
+  if (case_index) {
+    add(command, "--seed", std::to_string(options.seed));
+    add(command, "--case", std::to_string(*case_index));
+  } else {
+    add(command, "--save", shell_quoted(options.save.string()));
+    add(command, "--cases", "0");
+  }
+  add_judging(command, options);
+  return command;
+}
+
+std::string rerun_command(std::string_view candidate, const Options& options) {
+  std::string command = "circles conform";
+  if (!candidate.empty()) add(command, candidate);
+  add(command, "--seed", std::to_string(options.seed));
+  if (options.only_case) add(command, "--case", std::to_string(*options.only_case));
+  else if (options.cases != Options{}.cases) add(command, "--cases", std::to_string(options.cases));
+  if (options.shards > 1) add(command, "--shard", std::to_string(options.shard) + "/" + std::to_string(options.shards));
+  if (!options.save.empty()) add(command, "--save", shell_quoted(options.save.string()));
+  if (options.keep_going) add(command, "--keep-going");
+  add_judging(command, options);
   return command;
 }
 

@@ -24,4 +24,8 @@ std::string shell_quoted(std::string_view word);
 // Options::skip are named as the shorter of --families and --skip-families.
 std::string replay_command(std::string_view candidate, const Options& options, std::optional<std::uint64_t> case_index);
 
+// "circles conform CANDIDATE --seed S --level L [--cases N] [--shard I/N] [--save DIR] [--keep-going] ...": the
+// command that checks the same cases as a run of `options` again, for a run that a signal interrupted.
+std::string rerun_command(std::string_view candidate, const Options& options);
+
 }  // namespace circles::conform

@@ -84,7 +84,7 @@ void check_report(const nlohmann::json& r, const std::string& name) {
     if (!has(key, &nlohmann::json::is_number_unsigned)) refuse(r, name, key, "an integer >= 0");
   if (!has("elapsed_seconds", &nlohmann::json::is_number)) refuse(r, name, "elapsed_seconds", "a number");
   if (!parse_outcome(r.at("verdict").get<std::string>()))
-    refuse(r, name, "verdict", "\"conforms\", \"does not conform\" or \"cannot check\"");
+    refuse(r, name, "verdict", "\"conforms\", \"does not conform\", \"cannot check\" or \"interrupted\"");
   if (!has("error", &nlohmann::json::is_null) && !has("error", &nlohmann::json::is_string))
     refuse(r, name, "error", "null or a string");
   if (!has("families", &nlohmann::json::is_object) ||

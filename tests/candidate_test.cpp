@@ -2,14 +2,19 @@
 // sent batches of requests, refused with what they did when they break it, and never left running.
 #include "conform/candidate.hpp"
 
+#include "conform/interrupt.hpp"
 #include "engines/registry.hpp"
+#include "properties/boundaries.hpp"
 #include "spec/oracle.hpp"
+#include "tests/repository.hpp"
 #include "tests/step_worlds.hpp"
 #include "tests/thrown.hpp"
 
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <csignal>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -121,29 +126,118 @@ TEST(candidate, splits_requests_into_batches_a_program_echoing_them_answers_in_o
   cat.finish();
 }
 
+// Whether process `pid` runs: not when there is no such process, nor when it is a zombie waiting for its new
+// parent (init or a subreaper such as ctest) to reap it, state Z in /proc/PID/stat ("pid (comm) S ...").
+bool runs(pid_t pid) {
+  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+  std::string line;
+  if (!std::getline(stat, line)) return false;
+  const auto paren = line.rfind(')');
+  return paren != std::string::npos && paren + 2 < line.size() && line[paren + 2] != 'Z';
+}
+
+// Whether the process whose id a program wrote to `file` has ended, given a moment for a kill to land.
+bool ended(const std::filesystem::path& file) {
+  pid_t pid = 0;
+  for (int tries = 0; tries < 200 && !(std::ifstream(file) >> pid); ++tries) std::this_thread::sleep_for(10ms);
+  std::filesystem::remove(file);
+  if (pid <= 0) return false;
+  for (int tries = 0; tries < 100 && runs(pid); ++tries) std::this_thread::sleep_for(10ms);
+  return !runs(pid);
+}
+
+std::filesystem::path pid_file(const char* name) {
+  return std::filesystem::temp_directory_path() /
+         ("circles-conform-" + std::to_string(::getpid()) + "-" + name + ".pid");
+}
+
 TEST(candidate, leaves_no_process_behind_even_when_the_program_starts_others) {
-  const std::filesystem::path pid_file =
-      std::filesystem::temp_directory_path() / ("circles-conform-" + std::to_string(::getpid()) + ".pid");
+  const std::filesystem::path file = pid_file("background");
   {
     // The shell starts sleep in the background (same process group) and then hangs itself.
-    ProcessCandidate candidate("sleep 60 & echo $! > " + pid_file.string() + "; sleep 60", 100ms);
+    ProcessCandidate candidate("sleep 60 & echo $! > " + file.string() + "; sleep 60", 100ms);
     EXPECT_TRUE(thrown<BrokenCandidate>([&] { candidate.answer({}, 1); }));
   }
-  std::ifstream in(pid_file);
-  pid_t child = 0;
-  ASSERT_TRUE(in >> child);
-  std::filesystem::remove(pid_file);
-  // Dead: no such process, or a zombie waiting for its new parent (init or a subreaper such as ctest) to reap
-  // it, state Z in /proc/PID/stat ("pid (comm) S ..."). Give the kill a moment to land.
-  const auto alive = [child] {
-    std::ifstream stat("/proc/" + std::to_string(child) + "/stat");
-    std::string line;
-    if (!std::getline(stat, line)) return false;
-    const auto paren = line.rfind(')');
-    return paren != std::string::npos && paren + 2 < line.size() && line[paren + 2] != 'Z';
-  };
-  for (int tries = 0; tries < 100 && alive(); ++tries) std::this_thread::sleep_for(10ms);
-  EXPECT_FALSE(alive()) << "the background sleep " << child << " outlived the check";
+  EXPECT_TRUE(ended(file)) << "the background sleep outlived the check";
+}
+
+// interrupt(), as a signal handler calls it, kills every running program's group at once, before the check
+// gets back to its candidate; the candidate then answers nothing more, with Interrupted, not BrokenCandidate
+// (the program did nothing wrong). The first signal recorded is the one reported.
+TEST(candidate, an_interruption_kills_the_programs_at_once_and_ends_their_requests) {
+  const std::filesystem::path first = pid_file("first"), second = pid_file("second");
+  ProcessCandidate a("sleep 60 & echo $! > " + first.string() + "; exec cat", 10s);
+  ProcessCandidate b("sleep 60 & echo $! > " + second.string() + "; exec cat", 10s);
+  EXPECT_EQ(a.answer({{0, 0, 1, 0, 1}}, 1), (Circles{{0, 0, 1, 0, 1}}));  // cat echoes: both are running
+  EXPECT_EQ(b.answer({}, 1), Circles{});
+  interrupt(SIGTERM);
+  interrupt(SIGINT);
+  EXPECT_EQ(interruption(), SIGTERM);
+  EXPECT_TRUE(ended(first)) << "interrupt() left a program's group running";
+  EXPECT_TRUE(ended(second)) << "interrupt() left a program's group running";
+  const auto e = thrown<Interrupted>([&] { a.answer({}, 2); });
+  ASSERT_TRUE(e);
+  EXPECT_EQ(e->signal(), SIGTERM);
+  EXPECT_EQ(std::string(e->what()), "interrupted by SIGTERM");
+  // No program starts once the check is ending.
+  EXPECT_TRUE(thrown<Interrupted>([] { ProcessCandidate("exec cat", 10s); }));
+  clear_interruption();
+  EXPECT_EQ(interruption(), 0);
+}
+
+// An answer is refused as soon as it is longer than any answer to its world could be
+// (ProcessCandidate::longest_answer), so that what conform holds of a line is bounded by the world, not by what
+// a program writes: here 20 MB of spaces, of which conform reads about the first 71 KB.
+TEST(candidate, refuses_an_answer_longer_than_its_world_could_need_as_soon_as_it_passes_the_bound) {
+  // 64 KiB, and 5,600 bytes a circle: five numbers of up to 1,100 bytes, and 100 of brackets, commas, spaces.
+  EXPECT_EQ(ProcessCandidate::longest_answer(1), 65536u + 5600u);
+  EXPECT_EQ(ProcessCandidate::longest_answer(1000), 65536u + 5'600'000u);
+  EXPECT_EQ(ProcessCandidate::longest_answer(std::size_t(-1)), std::size_t(-1));  // no overflow
+  const std::string command = "read x; printf '{\"id\": 4, \"circles\": ['; head -c 20000000 /dev/zero | tr '\\0' ' '";
+  ProcessCandidate candidate(command, 10s);
+  const auto e = thrown<BrokenCandidate>([&] { candidate.answer({{0, 0, 1, 0, 1}}, 4); });
+  ASSERT_TRUE(e);
+  EXPECT_EQ(std::string(e->what()), "the program `" + command +
+                                        "` wrote a malformed answer to request 4: the line is longer than 71136 "
+                                        "bytes, more than any answer to its world needs (docs/protocol.md, Limits)");
+}
+
+// docs/protocol.md's Limits, as conform holds them: the longest request line of n circles (every number and the
+// id at their longest; a radius has no sign) is 126n + 39 bytes, and the longest answer read is longest_answer(n).
+TEST(candidate, protocol_md_states_the_longest_request_and_answer_conform_sends_and_reads) {
+  const std::string limits = circles::testing::text_of("docs/protocol.md");
+  for (const std::size_t n : {std::size_t{8}, properties::kDefaultMaxCircles}) {
+    const Circles widest(n, {-0x1.fffffffffffffp+1023, -0x1.fffffffffffffp+1023, -0x1.fffffffffffffp+1023,
+                             -0x1.fffffffffffffp+1023, 0x1.ffffffffffffep+1023});
+    EXPECT_EQ(format_line(kId, std::uint64_t(-1), widest).size(), 126 * n + 39);
+  }
+  for (const char* stated : {"126n + 39 bytes", "1,047 for 8 circles", "516,261 for 4,097", "4,097 by default",
+                             "65,536 + 5,600n bytes", "at most 1,077 characters"})
+    EXPECT_NE(limits.find(stated), std::string::npos) << "docs/protocol.md does not say " << stated;
+  EXPECT_EQ(properties::kDefaultMaxCircles, 4097u);
+  EXPECT_EQ(126 * 4097 + 39, 516'261);
+  EXPECT_EQ(ProcessCandidate::longest_answer(0), 65'536u);
+  EXPECT_EQ(ProcessCandidate::longest_answer(1) - ProcessCandidate::longest_answer(0), 5'600u);
+}
+
+// The bound leaves room for every number spelled as long as a double's exact decimal value can be: 200 circles
+// whose every number is a subnormal written out in full, 1,077 bytes or so each, are read, and read right.
+TEST(candidate, reads_an_answer_that_spells_every_number_in_full) {
+  const double largest_subnormal = 0x0.fffffffffffffp-1022, smallest = 0x0.0000000000001p-1022;
+  const Circles world(200, {-largest_subnormal, largest_subnormal, -0x0.aaaaaaaaaaaabp-1022, 0x0.5555555555555p-1022,
+                            smallest});
+  // Each number's exact value, written without an exponent by Python's Decimal.
+  const std::filesystem::path script = pid_file("spell").replace_extension("py");
+  std::ofstream(script) << "import sys, json, decimal\n"
+                           "for line in sys.stdin:\n"
+                           "    r = json.loads(line)\n"
+                           "    spell = lambda x: format(decimal.Decimal(x), 'f')\n"
+                           "    circles = ','.join('[' + ','.join(map(spell, c)) + ']' for c in r['circles'])\n"
+                           "    print('{\"id\": %d, \"circles\": [%s]}' % (r['id'], circles), flush=True)\n";
+  ProcessCandidate candidate("exec python3 " + script.string(), 10s);
+  EXPECT_EQ(candidate.answer(world, 1), world);
+  candidate.finish();
+  std::filesystem::remove(script);
 }
 
 }  // namespace

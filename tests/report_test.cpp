@@ -7,6 +7,7 @@
 #include "conform/candidate.hpp"
 #include "engines/registry.hpp"
 #include "conform/expect.hpp"
+#include "conform/interrupt.hpp"
 #include "spec/oracle.hpp"
 #include "tests/function_candidate.hpp"
 #include "tests/thrown.hpp"
@@ -16,6 +17,8 @@
 #include <pugixml.hpp>
 
 #include <cmath>
+#include <csignal>
+#include <sstream>
 #include <functional>
 #include <set>
 #include <string>
@@ -63,6 +66,70 @@ TEST(report, writes_a_conforming_verdict_as_json_with_the_cases_of_each_family) 
     EXPECT_EQ(count, 14) << family;  // 350 cases, 14 rounds of the 25 families
     EXPECT_EQ(r["family_status"][family], "passed") << family;
   }
+}
+
+// A check that a signal interrupts (conform/interrupt.hpp; here the candidate's 100th answer calls interrupt(),
+// as the handler does) stops there: its cases are those checked, every family that did not fail is an error in
+// JUnit, the JSON report says "interrupted", the text says how to check the same cases again, and the exit status
+// is 128 + the signal. Merged, an interrupted shard makes the run interrupted, unless one could not check.
+TEST(report, marks_an_interrupted_check_in_json_junit_and_the_merge_and_exits_128_plus_the_signal) {
+  int answers = 0;
+  const Verdict v = verdict_of([&](const Circles& w) {
+    if (++answers == 100) conform::interrupt(SIGINT);
+    return testing::right_step(w);
+  });
+  conform::clear_interruption();
+  ASSERT_EQ(v.outcome, Outcome::interrupted) << v.error;
+  EXPECT_EQ(v.signal, SIGINT);
+  EXPECT_GT(v.cases, 0u);
+  EXPECT_LT(v.cases, 350u);
+  EXPECT_EQ(v.rerun, "circles conform --seed 9 --cases 350 --level exact");
+  const nlohmann::json r = json_of(v);
+  EXPECT_EQ(r["verdict"], "interrupted");
+  EXPECT_EQ(r["error"], "interrupted by SIGINT");
+  EXPECT_EQ(r["cases"], v.cases);
+  EXPECT_EQ(r["family_status"].size(), 25u);
+
+  pugi::xml_document doc;
+  ASSERT_TRUE(doc.load_string(junit_report(v, "").c_str()));
+  const pugi::xml_node suite = doc.child("testsuites").child("testsuite");
+  std::size_t errors = 0;
+  for (const pugi::xml_node testcase : suite.children("testcase"))
+    if (const pugi::xml_node error = testcase.child("error")) {
+      ++errors;
+      EXPECT_EQ(std::string(error.attribute("type").value()), "interrupted");
+      EXPECT_EQ(std::string(error.attribute("message").value()), "interrupted by SIGINT");
+    }
+  EXPECT_EQ(errors, 25u);  // none of the families was checked to its share of the cases
+  EXPECT_EQ(suite.attribute("errors").as_int(), 25);
+
+  std::ostringstream out, err;
+  EXPECT_EQ(print_verdict(v, "", out, err), 128 + SIGINT);
+  EXPECT_EQ(out.str(), "");
+  EXPECT_EQ(err.str(), "circles conform: interrupted by SIGINT after " + std::to_string(v.checked()) +
+                           " cases (seed 9)\nto check the same cases again: " + v.rerun + "\n");
+
+  // Shards: one interrupted, one conforming, one that could not check.
+  nlohmann::json interrupted = r, conforming = r, broken = r;
+  interrupted["shard"] = "0/3";
+  conforming["shard"] = "1/3";
+  broken["shard"] = "2/3";
+  conforming["verdict"] = "conforms";
+  conforming["error"] = nullptr;
+  broken["verdict"] = "cannot check";
+  broken["error"] = "the program crashed";
+  const auto merged = [](const std::vector<nlohmann::json>& reports) {
+    std::vector<std::string> texts, names;
+    for (const nlohmann::json& report : reports) {
+      texts.push_back(report.dump());
+      names.push_back(report["shard"]);
+    }
+    return nlohmann::json::parse(conform::merge_reports(texts, names));
+  };
+  EXPECT_EQ(merged({conforming, interrupted})["verdict"], "interrupted");
+  EXPECT_EQ(merged({conforming, interrupted})["error"], "interrupted by SIGINT");
+  EXPECT_EQ(merged({interrupted, broken, conforming})["verdict"], "cannot check");
+  EXPECT_EQ(merged({broken, interrupted})["error"], "the program crashed");
 }
 
 TEST(report, writes_a_counterexample_with_its_world_answers_and_replay_line_and_infinity_as_a_string) {
@@ -210,7 +277,7 @@ TEST(report, refuses_to_merge_a_report_whose_keys_have_the_wrong_type_naming_the
   EXPECT_EQ(refusal("cases", "12"), "b.json: \"cases\": expected an integer >= 0, found \"12\"");
   EXPECT_EQ(refusal("verdict", missing), "b.json: \"verdict\": expected a string, found nothing");
   EXPECT_EQ(refusal("verdict", "passed"),
-            "b.json: \"verdict\": expected \"conforms\", \"does not conform\" or \"cannot check\", found \"passed\"");
+            "b.json: \"verdict\": expected \"conforms\", \"does not conform\", \"cannot check\" or \"interrupted\", found \"passed\"");
   EXPECT_EQ(refusal("families", {{"lattice", "x"}}),
             "b.json: \"families\": expected an object of case counts, integers >= 0, found {\"lattice\":\"x\"}");
   EXPECT_EQ(refusal("counterexample", {{"case", "zero"}}),
