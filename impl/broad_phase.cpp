@@ -54,15 +54,20 @@ void CellGrid::plan(std::span<const double> px, std::span<const double> py, std:
   // At least the extent over kPlannedCells, so the scene fits in the grid; halves keep the extent finite.
   const double extent = std::max(xhi / 2 - xlo / 2, yhi / 2 - ylo / 2);
   if (std::isfinite(extent)) base = std::max(base, extent / (kPlannedCells / 2));
-  // Keep 1/base finite and base finite: 2^-1000 and 2^1000 are far outside any width that matters here.
-  base_cell_ = std::clamp(std::isfinite(base) ? base : 0x1p1000, 0x1p-1000, 0x1p1000);
+  // Keep the base finite and positive: at most 2^1000, far above any width that matters here, and at least
+  // the least subnormal, so that a world at the subnormal scale gets cells of its own size, not one cell.
+  base_cell_ = std::clamp(std::isfinite(base) ? base : 0x1p1000, std::numeric_limits<double>::denorm_min(), 0x1p1000);
+  // Below 2^-1000, 1/base would overflow: cell() first scales x − origin by 2^s, exactly (a power of two,
+  // and no overflow: |x − origin| is within 2^27 base cells, or clamped anyway), so that base·2^s ≥ 2^-1000.
+  scale_ = base_cell_ < kLeastScaledBase ? std::ldexp(1.0, std::ilogb(kLeastScaledBase) - std::ilogb(base_cell_)) : 1;
   const double centre_x = std::isfinite(extent) ? xlo / 2 + xhi / 2 : 0;
   const double centre_y = std::isfinite(extent) ? ylo / 2 + yhi / 2 : 0;
   origin_x_ = centre_x - static_cast<double>(kCells / 2) * base_cell_;
   origin_y_ = centre_y - static_cast<double>(kCells / 2) * base_cell_;
-  // inv_L = 4^-L / base: exact powers of two apart (or 0 once they underflow, which keeps cell() monotone).
+  // inv_L = 4^-L / (base·2^s): exact powers of two apart (or 0 once they underflow, which keeps cell()
+  // monotone).
   for (unsigned level = 0; level < kLevels; ++level)
-    inverse_[level] = std::ldexp(1 / base_cell_, -2 * static_cast<int>(level));
+    inverse_[level] = std::ldexp(1 / (base_cell_ * scale_), -2 * static_cast<int>(level));
 }
 
 void CellGrid::keys(std::span<const double> px, std::span<const double> py, std::span<const double> r,
@@ -74,22 +79,28 @@ void CellGrid::keys(std::span<const double> px, std::span<const double> py, std:
   // A misfit is marked by a key no circle has (real keys use the low 60 bits), then redone.
   constexpr CellKey kMisfit = ~CellKey{0};
   const std::size_t n = out.size();
-  const double inv = inverse_[0], ox = origin_x_, oy = origin_y_;
-  for (std::size_t t = 0; t < n; ++t) {
-    const double x = px[t], y = py[t], radius = r[t];
-    const double xlo = outward_lower(x, radius), xhi = outward_upper(x, radius);
-    const double ylo = outward_lower(y, radius), yhi = outward_upper(y, radius);
-    const auto at0 = [inv](double v, double origin) {
-      double c = (v - origin) * inv;
-      c = c > 0 ? c : 0;
-      c = c < kLastCell ? c : kLastCell;
-      return static_cast<std::int32_t>(c);
-    };
-    const std::int32_t cx = at0(xlo, ox), cy = at0(ylo, oy), cx1 = at0(xhi, ox), cy1 = at0(yhi, oy);
-    const bool fits = ((xhi - xlo) * inv <= 1) & (cx1 - cx <= 1) & (cy1 - cy <= 1);
-    const CellKey key = pack(0, static_cast<std::uint32_t>(cy), static_cast<std::uint32_t>(cx));
-    out[t] = fits ? key : kMisfit;
-  }
+  // The loop for a scale of 1 (every world above the subnormal scale) multiplies by no scale at all.
+  const auto first_pass = [&]<bool kScaled>(std::bool_constant<kScaled>) {
+    const double inv = inverse_[0], ox = origin_x_, oy = origin_y_, scale = scale_;
+    for (std::size_t t = 0; t < n; ++t) {
+      const double x = px[t], y = py[t], radius = r[t];
+      const double xlo = outward_lower(x, radius), xhi = outward_upper(x, radius);
+      const double ylo = outward_lower(y, radius), yhi = outward_upper(y, radius);
+      const auto scaled = [scale](double d) { return kScaled ? d * scale : d; };
+      const auto at0 = [&](double v, double origin) {
+        double c = scaled(v - origin) * inv;
+        c = c > 0 ? c : 0;
+        c = c < kLastCell ? c : kLastCell;
+        return static_cast<std::int32_t>(c);
+      };
+      const std::int32_t cx = at0(xlo, ox), cy = at0(ylo, oy), cx1 = at0(xhi, ox), cy1 = at0(yhi, oy);
+      const bool fits = (scaled(xhi - xlo) * inv <= 1) & (cx1 - cx <= 1) & (cy1 - cy <= 1);
+      const CellKey key = pack(0, static_cast<std::uint32_t>(cy), static_cast<std::uint32_t>(cx));
+      out[t] = fits ? key : kMisfit;
+    }
+  };
+  if (scale_ == 1) first_pass(std::false_type{});
+  else first_pass(std::true_type{});
   for (std::size_t t = 0; t < n; ++t)
     if (out[t] == kMisfit) [[unlikely]]
       out[t] = key_at_any_level(outward_lower(px[t], r[t]), outward_upper(px[t], r[t]), outward_lower(py[t], r[t]),
@@ -99,7 +110,7 @@ void CellGrid::keys(std::span<const double> px, std::span<const double> py, std:
 CellKey CellGrid::key_at_any_level(double xlo, double xhi, double ylo, double yhi) const noexcept {
   // Start at the least level whose cell is at least the box's width in base cells, q = width·inv_0:
   // 4^L ≥ q for L = ⌈log4 q⌉ = ⌈(ilogb(q) + 1)/2⌉ (q < 2^(ilogb(q)+1)). Only a start: the span check decides.
-  const double q = (xhi - xlo) * inverse_[0];
+  const double q = (xhi - xlo) * scale_ * inverse_[0];
   unsigned level = 0;
   if (q > 1) level = static_cast<unsigned>(std::min((std::min(std::ilogb(q), 256) + 2) / 2, int{kGlobalLevel}));
   for (; level < kGlobalLevel; ++level) {

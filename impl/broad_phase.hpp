@@ -115,7 +115,7 @@ class CellGrid {
 
   // The cell index of x along one axis at a level: monotone in x. `origin` is the axis's origin.
   std::uint32_t cell(double x, double origin, unsigned level) const noexcept {
-    const double t = (x - origin) * inverse_[level];
+    const double t = (x - origin) * scale_ * inverse_[level];
     if (!(t > 0)) return 0;
     if (t >= kLastCell) return kCells - 1;
     return static_cast<std::uint32_t>(t);
@@ -156,8 +156,11 @@ class CellGrid {
   static constexpr double kWidthSpread = 4.0;
   static constexpr std::size_t kMedianSample = 4096;
   static constexpr double kBaseSlack = 1 + 0x1p-10;  // plan(): the base cell a little wider than the widest box
+  // The least base cell whose inverse is finite without a scale: 2^-1000, with room to spare (1/2^-1023 is).
+  static constexpr double kLeastScaledBase = 0x1p-1000;
   double origin_x_ = 0, origin_y_ = 0, base_cell_ = 1;
-  std::array<double, kLevels> inverse_{};  // inv_L = 4^-L / base cell
+  double scale_ = 1;  // 2^s: 1, or for a base cell below kLeastScaledBase the power of two that lifts it there
+  std::array<double, kLevels> inverse_{};  // inv_L = 4^-L / (base cell · scale)
 };
 
 // ── The order ─────────────────────────────────────────────────────────────────────────────────────────

@@ -11,6 +11,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <numeric>
 #include <random>
@@ -157,6 +158,32 @@ TEST(broad_phase, the_walk_takes_wide_runs_where_the_cells_that_hold_slots_hold_
   EXPECT_TRUE(few_per_cell(std::vector<CellKey>{}));
   EXPECT_TRUE(few_per_cell(std::vector<CellKey>{7}));
   EXPECT_FALSE(few_per_cell(std::vector<CellKey>{7, 7}));
+}
+
+// A world at the subnormal scale gets cells of its own size: 40 × 40 circles of radius 3·2^-1074 on a lattice of
+// pitch 16·2^-1074 (the whole world below 2^-1063) fall in as many cells as a world of the same shape at an
+// ordinary scale, not in the one cell of a base clamped far above their size (which made a step quadratic).
+TEST(broad_phase, a_world_at_the_subnormal_scale_gets_cells_of_its_own_size) {
+  const auto distinct_keys = [](double unit) {
+    std::vector<double> px, py, r;
+    for (int i = 0; i < 40; ++i)
+      for (int j = 0; j < 40; ++j) {
+        px.push_back(16 * i * unit);
+        py.push_back(-16 * j * unit);
+        r.push_back(3 * unit);
+      }
+    G grid;
+    grid.plan(px, py, r);
+    std::vector<CellKey> keys(px.size());
+    grid.keys(px, py, r, keys);
+    std::sort(keys.begin(), keys.end());
+    for (const CellKey k : keys) EXPECT_EQ(G::level(k), 0u);
+    return static_cast<std::size_t>(std::unique(keys.begin(), keys.end()) - keys.begin());
+  };
+  const std::size_t ordinary = distinct_keys(1.0);
+  EXPECT_GE(ordinary, 400u);  // at most four circles a cell
+  EXPECT_EQ(distinct_keys(std::numeric_limits<double>::denorm_min()), ordinary);
+  EXPECT_EQ(distinct_keys(0x1p-1040), ordinary);
 }
 
 TEST(broad_phase, keys_order_cells_by_level_band_column_then_row_within_the_band) {
