@@ -21,5 +21,9 @@ if(CIRCLES_SANITIZE)
   # (tests/docs_test.cpp), so that one warning is off here; the ordinary build still checks it.
   target_compile_options(circles_sanitize INTERFACE $<$<CXX_COMPILER_ID:GNU>:-Wno-maybe-uninitialized>)
   target_link_libraries(circles_warnings INTERFACE circles::sanitize)
+  # Libraries instrumented for libFuzzer report their filters' margins to its value profile (impl/detail/steer.hpp).
+  if(CIRCLES_SANITIZE MATCHES "fuzzer")
+    target_compile_definitions(circles_sanitize INTERFACE CIRCLES_FUZZ_STEERING)
+  endif()
   message(STATUS "circles: sanitizers ${CIRCLES_SANITIZE} on every circles target")
 endif()

@@ -1,8 +1,8 @@
 // The step fuzzer for anyone's step (docs/hardening.md, "Your own step"): the libFuzzer entry points around a
 // circles_step of <circles/step.h>, which the user's object defines. Each input, a world and K chained steps
 // (fuzz/step_input.hpp), is stepped K times by circles_step, each step from its own previous answer, and held
-// to the oracle's rounded steps (worlds of at most fuzz::kOracleCircles circles) or impl::ExactGrid's (bigger
-// ones). A difference aborts with the world as a scene (fuzz::fail). Installed as libcircles_step_harness.a;
+// to the exact engine's rounded steps, themselves held to impl::step_all_pairs and, on the oracle's sample of
+// inputs, to the oracle's rounded steps (fuzz::judged_reference). A difference aborts with the world as a scene (fuzz::fail). Installed as libcircles_step_harness.a;
 // circles_add_step_fuzzer (cmake/circlesStepFuzzer.cmake) links it with libFuzzer and the user's sources.
 #include "fuzz/step.h"
 #include "fuzz/step_input.hpp"
@@ -45,7 +45,7 @@ fuzz::Chain candidate_chain(const fuzz::StepInput& input, std::uint64_t steps) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const fuzz::StepInput input = fuzz::decode(std::span<const std::uint8_t>(data, size));
   const std::uint64_t steps = fuzz::judged_steps(input);
-  if (auto d = fuzz::difference(fuzz::rounded_reference(input.circles, steps), candidate_chain(input, steps)))
+  if (auto d = fuzz::difference(fuzz::judged_reference(input, steps), candidate_chain(input, steps)))
     fuzz::fail(input, "circles_step", *d);
   return 0;
 }

@@ -73,13 +73,19 @@ double power_below(double x) {
   return std::ldexp(1.0, e - 1);
 }
 
-void make_tangent(Circles& w, Draw& draw) {
+// Two circles of w drawn for a pair mutation, a copy of the first appended when the draw names one circle twice.
+std::pair<std::size_t, std::size_t> drawn_pair(Circles& w, Draw& draw) {
   const std::size_t a = draw.below(w.size());
   std::size_t b = draw.below(w.size());
   if (a == b) {
     w.push_back(w[a]);
     b = w.size() - 1;
   }
+  return {a, b};
+}
+
+void make_tangent(Circles& w, Draw& draw) {
+  const auto [a, b] = drawn_pair(w, draw);
   // t a power of two near a's radius: 2t + 3t along an axis, or 2t + 3t at (3t, 4t); the offsets and radii
   // are exact, the positions exact unless a's position has bits below t's.
   const double t = power_below(w[a][4]);
@@ -91,9 +97,42 @@ void make_tangent(Circles& w, Draw& draw) {
   w[b][1] = w[a][1] + sy * (axis ? 0.0 : 4 * t);
 }
 
+// A pair at the boundary of (3), where a filter's error bound decides: b placed at distance r_a + r_b from a in
+// a direction drawn at random, so that the offsets round and F = S² − X² − Y² is a few roundings from 0 (of
+// either sign, |F| of the order of 2^-52·S²); half the time then b moved by ±1 … 64 ulps on one axis, which
+// spans the sliver between the filters' bounds and bounds a few powers of two lower. The pair's scale is a's
+// radius, or a power of two drawn from 2^-60 … 2^60, or one near the subnormal range.
+void make_nearly_tangent(Circles& w, Draw& draw) {
+  const auto [a, b] = drawn_pair(w, draw);
+  const std::size_t scale_kind = draw.below(4);
+  const double scale = scale_kind == 0   ? std::ldexp(1.0, static_cast<int>(draw.below(121)) - 60)
+                       : scale_kind == 1 ? std::ldexp(1.0, -1020 - static_cast<int>(draw.below(40)))
+                                         : (w[a][4] > 0 && w[a][4] < 0x1p1000 ? w[a][4] : 1.0);
+  // r_b from r_a: equal, or a ratio up to 2^±8 with all its bits.
+  const double ratio = draw.coin() ? 1.0 : std::ldexp(1.0 + static_cast<double>(draw.next() >> 12) * 0x1p-52,
+                                                      static_cast<int>(draw.below(17)) - 8);
+  w[a][4] = scale;
+  w[b][4] = scale * ratio;
+  const double s = w[a][4] + w[b][4];
+  const double angle = static_cast<double>(draw.next() >> 11) * 0x1p-53 * 6.283185307179586;
+  w[b][0] = w[a][0] + s * std::cos(angle);
+  w[b][1] = w[a][1] + s * std::sin(angle);
+  if (draw.coin()) {
+    double& x = w[b][draw.below(2)];
+    x = nudged(x, static_cast<int>(draw.below(64) + 1) * (draw.coin() ? 1 : -1));
+  }
+}
+
+// A family's world: a big family's one draw in kBigFamilyDraws, a small family's otherwise. A big world costs as
+// much to judge as a hundred small ones, and once in the corpus its children are big too; the small families'
+// boundaries are where most decisions are close.
+constexpr std::uint64_t kBigFamilyDraws = 8;
 Circles drawn_family_world(Draw& draw) {
-  const auto all = properties::families(properties::Profile::resolved);
-  return family_world(all[draw.below(all.size())], draw.next());
+  std::vector<properties::Family> small, big;
+  for (const properties::Family f : properties::families(properties::Profile::resolved))
+    (properties::is_big(f) ? big : small).push_back(f);
+  const std::vector<properties::Family>& from = draw.below(kBigFamilyDraws) == 0 ? big : small;
+  return family_world(from[draw.below(from.size())], draw.next());
 }
 
 }  // namespace
@@ -140,7 +179,7 @@ StepInput mutate(StepInput input, std::uint64_t seed) {
   Draw draw(seed);
   Circles& w = input.circles;
   // An empty world can only grow: draw a family's world or a circle at a boundary value.
-  const std::size_t kind = w.empty() ? draw.below(2) : draw.below(12);
+  const std::size_t kind = w.empty() ? draw.below(2) : draw.below(13);
   switch (kind) {
     case 0:
       w = drawn_family_world(draw);
@@ -196,6 +235,9 @@ StepInput mutate(StepInput input, std::uint64_t seed) {
     }
     case 10:
       input.steps = 1 + draw.below(kMaxSteps);
+      break;
+    case 11:
+      make_nearly_tangent(w, draw);
       break;
     default: {  // a family's world beside this one
       const Circles more = drawn_family_world(draw);

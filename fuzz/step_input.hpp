@@ -49,7 +49,8 @@ Circles family_world(properties::Family family, std::uint64_t seed);
 
 // One mutation of `input`, chosen and drawn from `seed`: nudge a field by 1 … 3 ulps, scale the world by 2^e,
 // copy a circle (exactly or with one field changed), make two circles tangent (along an axis or a (3, 4, 5)
-// direction, exactly where the sums are exact), remove or swap circles, set a field to a boundary value (±0,
+// direction, exactly where the sums are exact), make two circles nearly tangent (in a direction drawn at
+// random, F a few roundings from 0, then maybe b moved by up to 64 ulps), remove or swap circles, set a field to a boundary value (±0,
 // 2^-1074, DBL_MIN, DBL_MAX, ...), copy a field from another circle (a tie), change K, or draw a family's
 // world (replacing or appended). The result is a world of C with at most kMaxCircles circles.
 StepInput mutate(StepInput input, std::uint64_t seed);

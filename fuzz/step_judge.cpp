@@ -1,8 +1,11 @@
 #include "fuzz/step_judge.hpp"
 
+#include "impl/engine.hpp"
+#include "impl/exact_engine.hpp"
 #include "impl/exact_grid_reference.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -93,6 +96,57 @@ Chain chain_of(const Circles& w0, std::uint64_t steps, const RoundedStep& one) {
     now = &chain.worlds.back();
   }
   return chain;
+}
+
+bool oracle_judges(const StepInput& input) {
+  if (input.circles.size() > kOracleCircles) return false;
+  // FNV-1a over the steps and the bits of every number.
+  std::uint64_t hash = 0xcbf29ce484222325;
+  const auto mix = [&hash](std::uint64_t word) {
+    for (int byte = 0; byte < 8; ++byte) hash = (hash ^ ((word >> (8 * byte)) & 0xff)) * 0x100000001b3;
+  };
+  mix(input.steps);
+  for (const auto& c : input.circles)
+    for (const double x : c) mix(std::bit_cast<std::uint64_t>(x));
+  return hash % kOracleSample == 0;
+}
+
+namespace {
+
+// One step of a reference engine or step from w, as a chain of one world or of the overflow that stops it.
+template <class Step>
+Chain one_step(Step step) {
+  try {
+    return Chain{{step()}, std::nullopt};
+  } catch (const impl::PositionOverflow& e) {
+    return Chain{{}, Overflow{e.step, e.index, e.field}};
+  }
+}
+
+}  // namespace
+
+Chain exact_engine_reference(const Circles& w0, std::uint64_t steps) {
+  return chain_of(w0, steps, [](const Circles& w) {
+    return one_step([&] {
+      impl::ExactEngine engine(impl::World{w}, {.threads = 1});
+      engine.step();
+      return engine.world().circles();
+    });
+  });
+}
+
+Chain all_pairs_reference(const Circles& w0, std::uint64_t steps) {
+  return chain_of(w0, steps, [](const Circles& w) { return one_step([&] { return impl::step_all_pairs(impl::World{w}).circles(); }); });
+}
+
+Chain judged_reference(const StepInput& input, std::uint64_t steps) {
+  Chain exact = exact_engine_reference(input.circles, steps);
+  if (auto d = difference(exact, all_pairs_reference(input.circles, steps)))
+    fail(input, "impl::step_all_pairs against the exact engine's rounded step (the references)", *d);
+  if (oracle_judges(input))
+    if (auto d = difference(rounded_reference(input.circles, steps), exact))
+      fail(input, "the exact engine's rounded step against the oracle's (the references)", *d);
+  return exact;
 }
 
 Chain rounded_reference(const Circles& w0, std::uint64_t steps) {

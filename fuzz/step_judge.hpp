@@ -1,11 +1,17 @@
 // The step fuzzer's judge (docs/hardening.md, "The step fuzzer"): chains of steps made by a step under test,
 // the references they are held to, and the report of a difference as a replayable scene.
 //
-// A reference shares no arithmetic with what it judges: worlds of at most kOracleCircles circles are judged by
-// the oracle of spec/ (Boost/GMP rationals, every pair, the spec's own order); bigger worlds, whose every step
-// would cost the oracle O(n²) rational products, by impl::ExactGrid (impl/exact_grid_reference.hpp: GMP
-// integers on a uniform grid, the exact kernels), which is neither engine's broad phase nor the double
-// predicate. Never step_all_pairs or step_grid: they decide with the double engine's own predicate.
+// A double step is held to two fast references that share no arithmetic with each other, and are held to
+// each other on every input:
+//   the exact engine's step  impl::ExactEngine, one step from each world, rounded: decisions in integers, the
+//                            position rounded from its exact value; no filter bound, no rounding certificate.
+//   every pair               impl::step_all_pairs: no broad phase, no grid, no pair list, no skin.
+// A bug of the double engine's arithmetic (a filter bound, the rounding certificate) makes it differ from the
+// exact engine's step; a bug of the broad phase both engines share makes both differ from every pair; for the
+// two references to agree on a wrong answer, both would need the same wrong answer from different code. On a
+// sample of the inputs (oracle_judges), worlds of at most kOracleCircles circles are also held to the oracle of
+// spec/ (Boost/GMP rationals, every pair, the spec's own order), which shares nothing with impl/, and exact
+// chains to its exact steps.
 #pragma once
 
 #include "fuzz/step_input.hpp"
@@ -19,8 +25,14 @@
 
 namespace circles::fuzz {
 
-// Worlds up to this size are judged by the oracle itself; a step of 48 circles costs it about 1 ms.
+// Worlds up to this size are judged by the oracle itself, on a sample of inputs; a step of 48 circles costs it
+// about 1 ms, and a chain of 16 steps of 8 circles 1.5 ms, ten times the rest of such an input's judging.
 inline constexpr std::size_t kOracleCircles = 48;
+// One input in kOracleSample is judged by the oracle too: the rest of the judging then dominates, and the
+// oracle still sees hundreds of inputs a minute. Which ones is a function of the input (a hash of its world
+// and steps), so that a replay of an input judges it the same way.
+inline constexpr std::uint64_t kOracleSample = 16;
+bool oracle_judges(const StepInput& input);
 
 // Steps chained from a world of more than kOracleCircles circles: at most kBigSteps of the input's K, since each
 // costs the reference (and an O(n²) step under test) about as much as all the small worlds' steps together;
@@ -56,6 +68,13 @@ Chain chain_of(const Circles& w0, std::uint64_t steps, const RoundedStep& one);
 // The reference for a double step: `steps` rounded steps from w0, by the oracle (spec::resolved_step_rounded)
 // for worlds of at most kOracleCircles circles, else by impl::ExactGrid's rounded step.
 Chain rounded_reference(const Circles& w0, std::uint64_t steps);
+// The fast references for a double step, each chained from its own previous world: the exact engine's step
+// rounded, and impl::step_all_pairs.
+Chain exact_engine_reference(const Circles& w0, std::uint64_t steps);
+Chain all_pairs_reference(const Circles& w0, std::uint64_t steps);
+// The rounded reference of an input: the exact engine's chain, held to every pair's (and on the oracle's sample
+// to the oracle's); a difference between them fails the input (fail) as a fault of the references.
+Chain judged_reference(const StepInput& input, std::uint64_t steps);
 // The reference for an exact step: the oracle's spec::resolved_step chained `steps` times from w0's exact
 // values, stopping at the first step with a position whose nearest double is ±infinity (the exact engine's
 // PositionOverflow). Bigger worlds' exact steps are held to the double engine instead (fuzz/step_fuzzer.cpp),

@@ -23,6 +23,8 @@
 // binary64 semantics otherwise: -ffast-math (reassociation, no infinities) would void every bound.
 #pragma once
 
+#include "impl/detail/steer.hpp"
+
 #include <cmath>
 #include <cstdint>
 
@@ -82,6 +84,7 @@ inline FilterTerms filter_terms(double q, double s, double absolute) {
 // (GCC does not if-convert a floating-point comparison that the source makes conditionally).
 inline Decision sign_filter_of_squares(double q, double s, double absolute) {
   const auto [d, bound] = filter_terms(q, s, absolute);
+  detail::steer(std::fabs(d), bound);  // the decision of (3): its margin, for the step fuzzer
   const bool decided = std::fabs(d) > bound;
   const bool positive = d > 0;
   // intersect (1) if decided and positive, disjoint (0) if decided and not, undecided (2) otherwise

@@ -6,6 +6,7 @@
 #include "impl/rounding.hpp"
 
 #include "impl/detail/exact_int.hpp"
+#include "impl/detail/steer.hpp"
 
 #include <gmp.h>
 
@@ -81,6 +82,7 @@ struct Fast {
   const double ay = std::fabs(y);
   const double G = ay - from_bits(bits(ay) - 1);
   const double H = 0.5 * G;
+  detail::steer(std::fabs(f) + B, H);
   const bool certified = (std::fabs(f) + B < H) & remainder_ok;
   // r = 0: x = p + q, whose RN is s (ties, zero signs and overflow included); y = s unless s is inf.
   const bool exact_sum = (r == 0.0) & (bits(y) == bits(s)) & remainder_ok;

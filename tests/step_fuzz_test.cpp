@@ -108,6 +108,47 @@ TEST(step_input, the_tangent_mutation_makes_two_circles_exactly_tangent_at_some_
   EXPECT_GT(tangent, 0);
 }
 
+// The nearly tangent mutation puts pairs where the filters' bounds decide: F = S² − X² − Y² not 0, yet within
+// 2^-40·S² of it, at several scales, which the exact tangent mutation (F = 0) and random worlds do not reach.
+TEST(step_input, the_nearly_tangent_mutation_puts_pairs_a_few_roundings_from_tangency) {
+  const StepInput start{1, {{0, 0, 0, 0, 1}, {1000, -1000, 0, 0, 3}}};
+  int close = 0;
+  for (std::uint64_t seed = 0; seed < 400; ++seed) {
+    const Circles w = mutate(start, seed).circles;
+    for (std::size_t a = 0; a < w.size(); ++a)
+      for (std::size_t b = a + 1; b < w.size(); ++b) {
+        const spec::Q x = spec::Q(w[b][0]) - spec::Q(w[a][0]), y = spec::Q(w[b][1]) - spec::Q(w[a][1]);
+        const spec::Q s = spec::Q(w[a][4]) + spec::Q(w[b][4]);
+        const spec::Q f = s * s - x * x - y * y;
+        if (f != 0 && s != 0 && abs(f) < s * s / spec::Q(std::ldexp(1.0, 40))) ++close;
+      }
+  }
+  EXPECT_GE(close, 10);
+}
+
+// The fast references (the exact engine's rounded step, every pair) are the oracle's rounded steps on every
+// small family's worlds, and one input in about kOracleSample is judged by the oracle too, the same one each time.
+TEST(step_judge, the_fast_references_are_the_oracles_steps_and_the_oracle_judges_a_fixed_sample) {
+  for (const properties::Family f : properties::families(properties::Profile::resolved)) {
+    if (properties::is_big(f)) continue;
+    for (std::uint64_t seed = 0; seed < 6; ++seed) {
+      const Circles w = family_world(f, seed);
+      const Chain want = rounded_reference(w, 3);
+      EXPECT_EQ(difference(want, exact_engine_reference(w, 3)), std::nullopt) << properties::name(f) << " " << seed;
+      EXPECT_EQ(difference(want, all_pairs_reference(w, 3)), std::nullopt) << properties::name(f) << " " << seed;
+    }
+  }
+  int sampled = 0;
+  for (int k = 0; k < 1600; ++k) {
+    const StepInput input{1 + static_cast<std::uint64_t>(k % 16), {{static_cast<double>(k), 0, 1, 0, 1}}};
+    sampled += oracle_judges(input);
+    EXPECT_EQ(oracle_judges(input), oracle_judges(StepInput(input)));
+  }
+  EXPECT_GT(sampled, 1600 / static_cast<int>(kOracleSample) / 2);
+  EXPECT_LT(sampled, 1600 / static_cast<int>(kOracleSample) * 2);
+  EXPECT_FALSE(oracle_judges(StepInput{1, Circles(kOracleCircles + 1, {0, 0, 0, 0, 1})}));  // never a big world
+}
+
 TEST(step_judge, the_double_engine_passes_and_the_naive_engine_is_caught_on_the_ulp_nudge_family) {
   int caught = 0;
   for (std::uint64_t seed = 0; seed < 100; ++seed) {
