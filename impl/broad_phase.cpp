@@ -51,8 +51,41 @@ void CellGrid::plan(std::span<const double> px, std::span<const double> py, std:
   // come out an ulp wider than it was planned with, miss level 0, and make every circle search the level
   // above. kBaseSlack keeps the widest planned box inside level 0 after such moves.
   base *= kBaseSlack;
-  // At least the extent over kPlannedCells, so the scene fits in the grid; halves keep the extent finite.
-  const double extent = std::max(xhi / 2 - xlo / 2, yhi / 2 - ylo / 2);
+  // At least the extent over kPlannedCells, so the scene fits in the grid; halves keep the extent finite. But
+  // a few far circles (outliers near ±2^1023 among ordinary ones) would make that a cell wider than the whole
+  // of the rest, and every step a test of every pair: when the extent is more than kTrimSpread times the
+  // spread of the sampled centres between their kTrim and (1 − kTrim) quantiles, the grid covers that spread
+  // (four times over, centred on it) and the circles beyond it clamp into the edge cells, which is correct,
+  // only slower for them (trimmed()).
+  double extent = std::max(xhi / 2 - xlo / 2, yhi / 2 - ylo / 2);
+  trimmed_ = false;
+  if (std::isfinite(extent) && n > 0) {
+    const auto quantiles = [&](std::span<const double> v) {
+      std::vector<double> centres;
+      centres.reserve(sample);
+      for (std::size_t s = 0; s < sample; ++s)
+        if (const double c = v[s * n / sample]; std::isfinite(c)) centres.push_back(c);
+      if (centres.empty()) return std::pair{0.0, 0.0};
+      const auto at = [&](std::size_t k) {
+        std::nth_element(centres.begin(), centres.begin() + static_cast<std::ptrdiff_t>(k), centres.end());
+        return centres[k];
+      };
+      const std::size_t trim = static_cast<std::size_t>(static_cast<double>(centres.size()) * kTrim);
+      return std::pair{at(trim), at(centres.size() - 1 - trim)};
+    };
+    const auto [qx0, qx1] = quantiles(px);
+    const auto [qy0, qy1] = quantiles(py);
+    // The spread as half-widths, at least the median box's, so a world of coinciding centres is not trimmed.
+    const double spread = std::max({qx1 / 2 - qx0 / 2, qy1 / 2 - qy0 / 2, limit / kWidthSpread});
+    if (extent > kTrimSpread * spread) {
+      trimmed_ = true;
+      extent = 4 * spread;
+      xlo = qx0 - 3 * spread;  // centred on the quantiles' middle: (qx0 + qx1)/2 ± 4·spread
+      xhi = qx1 + 3 * spread;
+      ylo = qy0 - 3 * spread;
+      yhi = qy1 + 3 * spread;
+    }
+  }
   if (std::isfinite(extent)) base = std::max(base, extent / (kPlannedCells / 2));
   // Keep the base finite and positive: at most 2^1000, far above any width that matters here, and at least
   // the least subnormal, so that a world at the subnormal scale gets cells of its own size, not one cell.

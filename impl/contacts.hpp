@@ -78,7 +78,8 @@ void for_each_slot(std::size_t n, unsigned threads, F&& f) {
 }
 
 // keys[t] = grid.key(px[t], py[t], r[t]) for every slot, per chunk. Where a circle has drifted out of the planned
-// grid (its cell would clamp, which is correct but slow), the grid is planned again and the keys recomputed.
+// grid (its cell would clamp, which is correct but slow), the grid is planned again and the keys recomputed,
+// unless the plan itself left far circles out (CellGrid::trimmed), which a new plan would do again.
 inline void locate(CellGrid& grid, unsigned threads, std::span<const double> px, std::span<const double> py,
                    std::span<const double> r, std::span<CellKey> keys) {
   const std::size_t n = keys.size();
@@ -102,7 +103,7 @@ inline void locate(CellGrid& grid, unsigned threads, std::span<const double> px,
   compute();
   bool inside = true;
   for (const auto& [xlo, xhi, ylo, yhi] : extent) inside = inside && (xlo > xhi || grid.covers(xlo, xhi, ylo, yhi));
-  if (!inside) {
+  if (!inside && !grid.trimmed()) {
     grid.plan(px, py, r);
     compute();
   }

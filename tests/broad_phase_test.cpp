@@ -186,6 +186,37 @@ TEST(broad_phase, a_world_at_the_subnormal_scale_gets_cells_of_its_own_size) {
   EXPECT_EQ(distinct_keys(0x1p-1040), ordinary);
 }
 
+// Four circles near ±1.5·10^308 among 40 × 40 ordinary ones: the grid is planned from the spread of the
+// ordinary centres (the far ones clamp into its edge cells), so the ordinary circles fall in as many cells as
+// without the far ones, not all in one cell of a base as wide as the double range.
+TEST(broad_phase, a_few_far_outliers_do_not_widen_the_cells_of_the_rest) {
+  std::vector<double> px, py, r;
+  for (int i = 0; i < 40; ++i)
+    for (int j = 0; j < 40; ++j) {
+      px.push_back(16.0 * i);
+      py.push_back(16.0 * j);
+      r.push_back(3);
+    }
+  const auto distinct_keys = [&](std::size_t outliers) {
+    std::vector<double> x = px, y = py, radius = r;
+    for (std::size_t k = 0; k < outliers; ++k) {
+      x.push_back(k % 2 ? 1.5e308 : -1.5e308);
+      y.push_back(k / 2 % 2 ? 1.5e308 : -1.5e308);
+      radius.push_back(3);
+    }
+    G grid;
+    grid.plan(x, y, radius);
+    EXPECT_EQ(grid.trimmed(), outliers > 0);
+    std::vector<CellKey> keys(x.size());
+    grid.keys(x, y, radius, keys);
+    keys.resize(px.size());  // the ordinary circles' keys
+    std::sort(keys.begin(), keys.end());
+    return static_cast<std::size_t>(std::unique(keys.begin(), keys.end()) - keys.begin());
+  };
+  EXPECT_EQ(distinct_keys(4), distinct_keys(0));
+  EXPECT_GE(distinct_keys(0), 400u);
+}
+
 TEST(broad_phase, keys_order_cells_by_level_band_column_then_row_within_the_band) {
   // Row 7 is the top of band 0, row 8 the bottom of band 1: column 5 of band 0 comes before column 0 of band 1,
   // and within a band a column's rows come before the next column.
