@@ -143,6 +143,9 @@ inline constexpr double kQuotientShrink = 1 - 0x1p-48;
 // x, r ≥ 0. The mirror image gives the upper bound. Four flops, no libm call (std::nextafter is one).
 inline constexpr double kOutwardRelative = 0x1p-52;  // |t|·2^-52 ≥ ulp(t) for normal t
 inline constexpr double kOutwardAbsolute = 0x1p-1073;  // > ulp of every subnormal, 2^-1074
+// kOutwardAbsolute is slack: a subnormal t is x ∓ r exactly (a sum of doubles below 2^-1022 is exact), and a
+// normal t has |t|·2^-52 ≥ 2^-1074 already. proofs/smt/outward.smt2 proves both bounds by z3, at 0 too; the
+// term stays so that the argument above does not lean on that.
 
 // reach + skin below this: positions stay finite through the horizon (a rounded |p| ≤ 2^1023·(1 + 2^-52) <
 // DBL_MAX), so steps update in place without checking for overflow.

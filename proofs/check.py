@@ -1,13 +1,16 @@
 #!/usr/bin/python3
-"""Checks the machine-checked error bounds: proofs/bounds.tsv against impl/ and the Gappa proofs in proofs/gappa/.
+"""Checks the machine-checked error bounds: proofs/bounds.tsv against impl/, the Gappa proofs in proofs/gappa/ and
+the SMT proofs (z3, floating-point theory) in proofs/smt/.
 
     proofs/check.py static           the registry, the constants and the hashes (no gappa; a second)
-    proofs/check.py prove [--jobs N] [--gappa PATH]  gappa on every proof, then on every lowered constant (docs/proofs.md)
+    proofs/check.py prove [--jobs N] [--gappa PATH] [--z3 PATH]
+                                     every proof, then every proof with its constant lowered (docs/proofs.md)
     proofs/check.py hash FILE FUNC   the hash of a function's body, for a proof's header
 
 static fails when
   - a double constant named k* in impl/ has no row in the registry, or a row names no such constant;
-  - a row is neither proofs (paths under proofs/gappa/) nor `none: KIND, REASON` with a known KIND;
+  - a row is neither proofs (paths under proofs/gappa/ or proofs/smt/) nor `none: KIND, REASON` with a known
+    KIND;
   - a proof is in no row, or a row's proof is missing, or lacks a header line (models, claim, regime, hash);
   - a constant a proof defines (`kName = literal;`) differs in exact value from the C++ constant of that name;
   - a proof's `# hash: FILE FUNCTION HEX` is not the hash of FUNCTION's body in FILE now (the code changed
@@ -35,7 +38,7 @@ from fractions import Fraction
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 REGISTRY = ROOT / "proofs/bounds.tsv"
-PROOFS = ROOT / "proofs/gappa"
+PROOF_DIRS = ("proofs/gappa/", "proofs/smt/")
 KINDS = ("overflow", "discrete", "planning", "definition", "open")
 HEADER = ("models", "claim", "regime", "hash")
 PROVE_SECONDS = 300  # one case at the code's constants; the slowest takes about 10 s
@@ -44,6 +47,7 @@ REFUTE_SECONDS = 30  # one case at a lowered constant: gappa searches long befor
 
 CPP_CONSTANT = re.compile(r"constexpr\s+double\s+(k\w+)\s*=\s*([^;]+);")
 GAPPA_CONSTANT = re.compile(r"^(k\w+)\s*=\s*([^;]+);", re.M)
+SMT_CONSTANT = re.compile(r"^\(define-fun (k\w+) \(\) Real (.+)\)$", re.M)
 
 
 class Failures(list):
@@ -132,9 +136,11 @@ class Proof:
         self.text = path.read_text(encoding="utf-8")
         self.header = {}
         for line in self.text.splitlines():
-            if m := re.match(r"#\s*(\w+):\s*(.*)", line):
+            if m := re.match(r"[#;]\s*(\w+):\s*(.*)", line):
                 self.header.setdefault(m[1], []).append(m[2].strip())
-        self.constants = {m[1]: m[2].strip() for m in GAPPA_CONSTANT.finditer(self.text)}
+        self.smt = path.suffix == ".smt2"
+        pattern = SMT_CONSTANT if self.smt else GAPPA_CONSTANT
+        self.constants = {m[1]: m[2].strip() for m in pattern.finditer(self.text)}
 
     @property
     def name(self):
@@ -158,12 +164,34 @@ class Proof:
             out.append(case)
         return out
 
+    def value(self, name):
+        """The exact value of constant name as this proof defines it."""
+        text = self.constants[name]
+        if self.smt:
+            m = re.fullmatch(r"\(/ ([\d.]+) ([\d.]+)\)|([\d.]+)", text)
+            return None if not m else Fraction(m[3]) if m[3] else Fraction(m[1]) / Fraction(m[2])
+        return evaluate(text, exact=True)
+
     def with_constant(self, name, value):
+        """The proof's text with constant name set to value, a C++ literal (scripts/mutants, proofs/bounds.tsv)."""
+        if self.smt:
+            q = Fraction(evaluate(value, exact=False))
+            return re.sub(r"^(\(define-fun " + re.escape(name) + r" \(\) Real ).+\)$",
+                          lambda m: f"{m[1]}(/ {q.numerator}.0 {q.denominator}.0))", self.text, flags=re.M)
         return re.sub(r"^(" + re.escape(name) + r"\s*=\s*)[^;]+;", lambda m: m[1] + value + ";", self.text,
                       flags=re.M)
 
+    def run(self, text, seconds):
+        return (z3 if self.smt else gappa)(text, seconds)
+
 
 GAPPA = ["gappa"]
+Z3 = ["z3"]
+
+
+def all_proofs():
+    return [Proof(path) for folder in PROOF_DIRS for path in sorted((ROOT / folder).glob("*.[gs]*"))
+            if path.suffix in (".g", ".smt2")]
 
 
 def gappa(text, seconds):
@@ -173,6 +201,17 @@ def gappa(text, seconds):
     except subprocess.TimeoutExpired:
         return False
     return result.returncode == 0
+
+
+def z3(text, seconds):
+    """True when z3 finds the negated claim unsatisfiable within seconds (the claim holds), False when it finds a
+    counterexample, gives up or runs out of time."""
+    try:
+        result = subprocess.run(Z3 + ["-in", f"-T:{seconds}"], input=text, capture_output=True, text=True,
+                                timeout=seconds + 10)
+    except subprocess.TimeoutExpired:
+        return False
+    return result.stdout.split()[:1] == ["unsat"]
 
 
 # ── the registry ─────────────────────────────────────────────────────────────────────────────────────────
@@ -238,12 +277,11 @@ def static(failures):
             failures.add(f"{where}: neither proofs nor `none: KIND, REASON`")
         for path in row.proofs:
             proved.add(path)
-            if not path.startswith("proofs/gappa/") or not (ROOT / path).is_file():
-                failures.add(f"{where}: {path} is no file under proofs/gappa/")
+            if not path.startswith(PROOF_DIRS) or not (ROOT / path).is_file():
+                failures.add(f"{where}: {path} is no file under {' or '.join(PROOF_DIRS)}")
             elif row.name not in Proof(ROOT / path).constants:
                 failures.add(f"{where}: {path} does not define {row.name}")
-    for path in sorted(PROOFS.glob("*.g")):
-        proof = Proof(path)
+    for proof in all_proofs():
         if proof.name not in proved:
             failures.add(f"{proof.name}: in no row of proofs/bounds.tsv")
         for key in HEADER:
@@ -264,7 +302,7 @@ def static(failures):
             if name not in constants:
                 failures.add(f"{proof.name}: {name} is no double constant of impl/")
                 continue
-            mine, theirs = evaluate(text, exact=True), evaluate(constants[name][1], exact=False)
+            mine, theirs = proof.value(name), evaluate(constants[name][1], exact=False)
             if mine is None or theirs is None:
                 failures.add(f"{proof.name}: {name}: cannot evaluate `{text}` or `{constants[name][1]}`")
             elif mine != Fraction(theirs):
@@ -284,24 +322,24 @@ def static(failures):
 def jobs_of(rows, failures):
     """(label, proof texts, expected verdict) for every gappa run: each proof, then each lowered constant."""
     jobs = []
-    for path in sorted(PROOFS.glob("*.g")):
-        proof = Proof(path)
-        jobs.append((proof.name, proof.cases(), True))
+    for proof in all_proofs():
+        jobs.append((proof.name, [(proof, case) for case in proof.cases()], True))
     mutants = {m.name: mutant_value(m) for m in load_mutants()}
     for row in rows.values():
         if not row.proofs:
             continue
         proofs = [Proof(ROOT / p) for p in row.proofs]
-        lowered = [v for v in (row.options.get("fails"), mutants.get(row.name)) if v and v != row.options.get("slack")]
+        lowered = [v for v in (row.options.get("fails"), mutants.get(row.name))
+                   if v and v != "never" and v != row.options.get("slack")]
         if not lowered and row.options.get("fails") != "never":
             failures.add(f"proofs/bounds.tsv:{row.line}: {row.name}: no value it must fail at (`fails V`, or "
                          f"a mutant), nor `fails never` with the reason in the docs")
         for value in dict.fromkeys(lowered):
-            texts = [case for p in proofs for case in p.cases(p.with_constant(row.name, value))]
+            texts = [(p, case) for p in proofs for case in p.cases(p.with_constant(row.name, value))]
             jobs.append((f"{row.name} = {value}", texts, False))
         if row.options.get("slack"):
             value = row.options["slack"]
-            texts = [case for p in proofs for case in p.cases(p.with_constant(row.name, value))]
+            texts = [(p, case) for p in proofs for case in p.cases(p.with_constant(row.name, value))]
             jobs.append((f"{row.name} = {value} (slack)", texts, True))
     return jobs
 
@@ -310,18 +348,18 @@ def prove(rows, jobs_count, failures):
     jobs = jobs_of(rows, failures)
     start = time.monotonic()
     with concurrent.futures.ThreadPoolExecutor(max_workers=jobs_count) as pool:
-        runs = [(label, expected, [pool.submit(gappa, text, PROVE_SECONDS if expected else REFUTE_SECONDS)
-                                   for text in texts])
+        runs = [(label, expected, [pool.submit(proof.run, text, PROVE_SECONDS if expected else REFUTE_SECONDS)
+                                   for proof, text in texts])
                 for label, texts, expected in jobs]
         for label, expected, futures in runs:
             verdicts = [f.result() for f in futures]
             if expected and not all(verdicts):
-                failures.add(f"{label}: gappa does not prove it (case {verdicts.index(False) + 1} of {len(verdicts)})")
+                failures.add(f"{label}: not proved (case {verdicts.index(False) + 1} of {len(verdicts)})")
             elif not expected and all(verdicts):
                 failures.add(f"{label}: still proves: the proof does not need the constant it names")
             else:
                 print(f"{label}: {'proved' if expected else 'refuted, as it must be'} ({len(verdicts)} case(s))")
-    print(f"{len(jobs)} gappa jobs in {time.monotonic() - start:.0f} s")
+    print(f"{len(jobs)} proof jobs in {time.monotonic() - start:.0f} s")
 
 
 def main(argv):
@@ -330,8 +368,9 @@ def main(argv):
     parser.add_argument("args", nargs="*")
     parser.add_argument("--jobs", type=int, default=2, help="gappa runs at once (default 2)")
     parser.add_argument("--gappa", default="gappa", help="the gappa program (default: gappa on the PATH)")
+    parser.add_argument("--z3", default="z3", help="the z3 program (default: z3 on the PATH)")
     args = parser.parse_args(argv)
-    GAPPA[0] = args.gappa
+    GAPPA[0], Z3[0] = args.gappa, args.z3
     if args.mode == "hash":
         if len(args.args) != 2:
             parser.error("hash takes FILE FUNCTION")
