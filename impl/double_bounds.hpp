@@ -143,9 +143,10 @@ inline constexpr double kQuotientShrink = 1 - 0x1p-48;
 // x, r ≥ 0. The mirror image gives the upper bound. Four flops, no libm call (std::nextafter is one).
 inline constexpr double kOutwardRelative = 0x1p-52;  // |t|·2^-52 ≥ ulp(t) for normal t
 inline constexpr double kOutwardAbsolute = 0x1p-1073;  // > ulp of every subnormal, 2^-1074
-// kOutwardAbsolute is slack: a subnormal t is x ∓ r exactly (a sum of doubles below 2^-1022 is exact), and a
-// normal t has |t|·2^-52 ≥ 2^-1074 already. proofs/smt/outward.smt2 proves both bounds by z3, at 0 too; the
-// term stays so that the argument above does not lean on that.
+// For the outward bounds alone kOutwardAbsolute is slack: a subnormal t is x ∓ r exactly, and a normal t has
+// |t|·2^-52 ≥ 2^-1074 already (proofs/smt/outward.smt2 proves them by z3 with it at 0 too). The exact engine's
+// inflated radii need it: outward_upper(ρ, RN(e·kCentreSpread) + skin) ≥ ρ + (1 + √2)·e + skin rests on it where
+// e is subnormal, since RN(5·2^-1074·2.5) = 12·2^-1074 is short of (1 + √2)·5·2^-1074.
 
 // reach + skin below this: positions stay finite through the horizon (a rounded |p| ≤ 2^1023·(1 + 2^-52) <
 // DBL_MAX), so steps update in place without checking for overflow.

@@ -445,6 +445,7 @@ TEST(engine, outward_bounds_contain_the_exact_interval_within_a_few_ulps) {
     for (const double r : {0.0, 0x1p-1074, 0x1p-60, 1.0, DBL_MAX}) check(x, r);
   EXPECT_LT(outward_lower(1.0, 0.0), 1.0);
   EXPECT_GT(outward_upper(1.0, 0.0), 1.0);
+  EXPECT_EQ(outward_lower(0.0, 0.0), -0x1p-1073);
   EXPECT_EQ(outward_lower(-DBL_MAX, DBL_MAX), -kInf);
   EXPECT_EQ(outward_upper(DBL_MAX, 1.0), kInf);
 }
