@@ -15,7 +15,8 @@ static fails when
   - a constant a proof defines (`kName = literal;`) differs in exact value from the C++ constant of that name;
   - a proof's `# hash: FILE FUNCTION HEX` is not the hash of FUNCTION's body in FILE now (the code changed
     under the proof: reread the proof against the code, then put the new hash);
-  - a mutant of scripts/mutants lowers a proved bound and the registry and the mutant disagree on its slack.
+  - a mutant of scripts/mutants lowers a proved bound and the registry and the mutant disagree on its slack;
+  - docs/hardening.md's mutants table says of a bound other than the registry (its machine-checked column).
 prove fails when a proof does not prove, or when a proved bound, set to the value its row gives after
 `fails` or to its mutant's value (unless the row records that value as `slack`), still proves: a proof
 that holds whatever the constant is proves nothing about it. A `slack` value must still prove.
@@ -316,7 +317,29 @@ def static(failures):
             failures.add(f"proofs/bounds.tsv:{row.line}: {m.name}: scripts/mutants "
                          f"{'calls' if m.known else 'does not call'} {value} slack, the registry "
                          f"{'does' if slack == value else 'does not'}")
+    check_hardening_table(rows, failures)
     return rows
+
+
+def machine_checked(row):
+    """The cell of docs/hardening.md's mutants table for a bound: its proofs, or the kind of claim it is."""
+    if row is None:
+        return "not machine-checked: not a constant (a step of the proof)"
+    if not row.proofs:
+        return f"not machine-checked ({row.evidence[5:].partition(',')[0].strip()})"
+    return ", ".join(f"`{path.split('/')[-1]}`" for path in row.proofs)
+
+
+def check_hardening_table(rows, failures):
+    """docs/hardening.md's mutants table says of each bound what the registry says."""
+    text = (ROOT / "docs/hardening.md").read_text(encoding="utf-8")
+    start = text.index("| mutant (file) | edit | verdict: the first test that failed | machine-checked")
+    for line in text[start:text.index("\n\n", start)].splitlines()[2:]:
+        cells = [c.strip() for c in line.strip("|").split("|")]
+        name = cells[0].split(" (")[0]
+        if cells[-1] != machine_checked(rows.get(name)):
+            failures.add(f"docs/hardening.md: the mutants table says {cells[-1]!r} of {name}, "
+                         f"proofs/bounds.tsv {machine_checked(rows.get(name))!r}")
 
 
 def jobs_of(rows, failures):
