@@ -35,6 +35,8 @@
 // radix sort, linear too).
 #pragma once
 
+#include "impl/double_bounds.hpp"
+
 #include "impl/buffers.hpp"
 
 #include <algorithm>
@@ -50,14 +52,7 @@
 namespace circles::impl {
 
 // ── Outward bounds ────────────────────────────────────────────────────────────────────────────────────
-//
-// t = RN(x − r) is within the two doubles that bracket the exact x − r, so pred(t), the double below t, is
-// ≤ x − r. With e = RN(RN(|t|·2^-52) + 2^-1073) ≥ ulp(t) (|t|·2^-52 ≥ ulp(t) for normal t, RN is monotone and
-// ulp(t) is a double; for subnormal t, ulp(t) = 2^-1074 < 2^-1073), t − e ≤ t − ulp(t) ≤ pred(t) exactly, and
-// RN is monotone, so RN(t − e) ≤ pred(t) ≤ x − r. An overflow gives t = −∞, e = +∞ and −∞: no NaN for finite
-// x, r ≥ 0. The mirror image gives the upper bound. Four flops, no libm call (std::nextafter is one).
-inline constexpr double kOutwardRelative = 0x1p-52;  // |t|·2^-52 ≥ ulp(t) for normal t
-inline constexpr double kOutwardAbsolute = 0x1p-1073;  // > ulp of every subnormal, 2^-1074
+// kOutwardRelative and kOutwardAbsolute, with the proof that RN(t ∓ e) is outward, are in impl/double_bounds.hpp.
 
 // A double ≤ the exact x − r, for finite x and r ≥ 0 (−∞ when x − r is below −DBL_MAX's reach).
 inline double outward_lower(double x, double r) noexcept {

@@ -12,6 +12,7 @@
 
 #include "impl/buffers.hpp"
 #include "impl/cell_layout_impl.hpp"
+#include "impl/double_bounds.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -22,10 +23,6 @@
 
 namespace circles::impl {
 namespace {
-
-// reach + skin below this: positions stay finite through the horizon (a rounded |p| ≤ 2^1023·(1 + 2^-52) <
-// DBL_MAX), so steps update in place without checking for overflow.
-constexpr double kOverflowFreeReach = 0x1p1023;
 
 // The resolved profile's order on circles a and b given by their five keys (px, py, vx, vy, r), each decided by
 // exact comparisons of doubles: equal values (−0 and +0 included) pass to the next key; tie() decides when all

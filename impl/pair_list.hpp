@@ -32,36 +32,8 @@
 namespace circles::impl {
 
 // ── The skin ──────────────────────────────────────────────────────────────────────────────────────────
-//
-// One step moves a circle by d = (RN(px + vx/60) − px, RN(py + vy/60) − py) in the double engines. Per
-// coordinate, |RN(p + v/60) − (p + v/60)| ≤ ulp(p′)/2 ≤ |p′|·2^-53 + 2^-1075 (2^-53 relative for a normal p′,
-// half the subnormal ulp otherwise), so the rounding error e of d has |e| ≤ √2·(|p′|·2^-53 + 2^-1075), and
-// |d| ≤ |v|/60 + |e|. Over H steps, with |v| ≤ vmax and every coordinate within `far` of the origin:
-//
-//   |p_{t+H} − p_t| ≤ H·(vmax/60 + √2·2^-53·far + √2·2^-1075).
-//
-// skin_for computes that bound in doubles with each constant rounded up by enough to cover the at most eight
-// roundings (relative 2^-53 each) of its own arithmetic and of vmax (norm_upper):
-//   kSpeedBound   = 0x1.11111111112p-6 ≥ (1/60)·(1 + 2^-45): 1/60 = 0x1.111…p-6, cut after 44 bits and rounded
-//                   up; 2^-45 > 2^-50 > eight roundings of 2^-53; below (1/60)(1 + 2^-44), as
-//                   tests/pair_list_test.cpp recomputes. Where moves are exact the drift term is slack
-//                   (far·kDriftBound, about 2^-51.7 of a step or more for a pair that closes its gap within
-//                   the horizon), and so are the list filter's margin (2^-50 of the distance) and
-//                   outward_upper's (2^-52). Whether the other terms' roundings could all go against a speed
-//                   term short of 1/60 at once is not proven either way, so kSpeedBound keeps its own margin.
-//                   The tests put the whole step bound at its edge: two points that meet at the horizon's end
-//                   in the tightest world (tests/pair_list_test.cpp); docs/hardening.md ("Mutants") has the
-//                   runs around this margin.
-//   kDriftBound   = 0x1.6a1p-53 ≥ √2·2^-53·(1 + 2^-14): √2 = 0x1.6a09e6…, rounded up at 12 bits. Its margin
-//                   also covers `far` leaving out the drift itself (H·2^-52 relative, H ≤ kMaxHorizon). Its
-//                   edge is on the diagonal, where both coordinates round forward by half an ulp: 2^-53 (the √2
-//                   left out) drops such a pair (tests/pair_list_test.cpp).
-//   kDriftAbsolute = 0x1p-1073 ≥ 2·√2·2^-1075.
-//   far           = reach + H·vmax·kSpeedBound, reach = the largest |coordinate| of world t.
-// The exact engine's moves are exact (X ← X + V): its skin is the speed term alone, on its own vmax.
-inline constexpr double kSpeedBound = 0x1.11111111112p-6;
-inline constexpr double kDriftBound = 0x1.6a1p-53;
-inline constexpr double kDriftAbsolute = 0x1p-1073;
+// The bound on H steps of motion: kSpeedBound, kDriftBound and kDriftAbsolute, with their derivation, are in
+// impl/double_bounds.hpp.
 
 // A double n with √(vx² + vy²) ≤ n·(1 + 2^-50) + 2^-1074: m·√(1 + q²) with m = max(|vx|, |vy|) and
 // q = min/max ≤ 1, so nothing underflows or overflows early; five roundings of relative 2^-53 each (kSpeedBound's
@@ -89,38 +61,8 @@ inline double skin_for(std::uint64_t horizon, double vmax, double reach, double 
 }
 
 // ── When a pair can first meet ────────────────────────────────────────────────────────────────────────
-//
-// A pair whose gap g = |p_b − p_a| − (r_a + r_b) is positive in world t cannot intersect in world t + j unless
-// its two circles closed the gap, each moving at most j·step (step = skin/H, the bound of one step), so
-// j ≥ g/(2·step): the pair needs no test before step ⌈g/(2·step)⌉ of the horizon. first_step computes that
-// step from below, so the pair is tested no later than it must be:
-//   dx = RN(bx − ax), dy likewise, d2 = RN(RN(dx²) + RN(dy²)): d2 ≤ D²(1 + u)^4 + 3η (u = 2^-53, η = 2^-1075
-//   for the squares' underflow), so D ≥ RN(√d2)·(1 + u)^-3 − √(3η); where d2 overflows, root = norm_upper(dx,
-//   dy) ≤ D·(1 + 2^-50) + 2^-1074 instead (tests/pair_list_test.cpp). And r_a + r_b ≤ RN(r_a + r_b)(1 + u).
-//   So g ≥ RN(root·(1 − kGapRelative)) − RN(RN(r_a + r_b)·(1 + kGapRelative)) − kGapAbsolute with
-//   kGapRelative = 2^-49 (> 2^-50 + u + 3u) and kGapAbsolute = 2^-500 > √(3η) ≈ 2^-536.7; the last
-//   subtraction and the quotient round by u each, which the quotient's factor (1 − 2^-48) absorbs;
-//   the step is ⌈RN(g/(2·step))·(1 − 2^-48)⌉, 0 for g ≤ 0, and kNever when it is past the horizon.
-// Which of these a test can reach (tests/pair_list_test.cpp; each tried by lowering it):
-//   kGapRelative  the root's rounding is u of the distance, not of the gap: without it first_step answers
-//                 late for a gap of a whole number of steps that is small beside the distance (its property
-//                 test fails). 4u would hold too, with kQuotientShrink: below the overflow RN(root·(1 − 4u)) ≤
-//                 D·(1 + u)^4·(1 − 4u) + 2^-536 ≤ D + 2^-536; above it norm_upper's five roundings put root at
-//                 most 13u/4 above |(dx, dy)| (2^-50 bounds the other side), 17u/4 above D, so RN(root·(1 − 4u))
-//                 ≤ D·(1 + 5u/4 + O(u²)); the sum's side takes 2u·(r_a + r_b) off, so the gap is over by at
-//                 most 5u/4·D − 2u·(r_a + r_b) ≤ 5u/4·g, which the quotient's 2^-48 = 32u covers with the
-//                 three roundings after it.
-//   kQuotientShrink  covered twice over: kGapRelative takes 2^-49·(root + sum) off, of which the root's own
-//                 rounding needs at most 4u·root (norm_upper's 2^-50), leaving at least 12u of the gap, and
-//                 the subtraction and the quotient round by u of the gap each: a quotient left unshrunk is
-//                 never late (tried: no test fails, and none can); it stays for the derivation's sake.
-//   kGapAbsolute  where the squares underflow, RN(√d2) exceeds the distance by an absolute amount no
-//                 relative margin covers: 2^-538.27 where two squares just above half the least subnormal
-//                 round up to it. 2^-539 drops such a pair and the engines miss its contact; 2^-538 does not.
-// A non-finite gap (only within reach of the double range) gives 0: test from the first step.
-inline constexpr double kGapRelative = 0x1p-49;
-inline constexpr double kGapAbsolute = 0x1p-500;
-inline constexpr double kQuotientShrink = 1 - 0x1p-48;
+// A pair's first step from below: kGapRelative, kGapAbsolute and kQuotientShrink, with their derivation, are in
+// impl/double_bounds.hpp.
 inline constexpr std::uint32_t kNever = ~std::uint32_t{0};
 inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
 

@@ -24,6 +24,7 @@
 #pragma once
 
 #include "impl/detail/steer.hpp"
+#include "impl/double_bounds.hpp"
 
 #include <cmath>
 #include <cstdint>
@@ -36,35 +37,8 @@ enum class Decision : std::uint8_t { disjoint = 0, intersect = 1, undecided = 2 
 // Which stage gave intersect_exact its answer.
 enum class Stage : std::uint8_t { filter, rescaled, gmp };
 
-// The bounds of the filter (Stage A and A′ of intersect_exact; impl/pair_list.hpp's listing filters use
-// kAbsolute too), each with its derivation.
-namespace filter {
-
-// kRelative = 2^-50 = 8u: the bound's factor on M = RN(P + Q), the computed S² + X² + Y².
-// |D − F| ≤ k·M + γ·(b + η), k = ((1+u)^5 − 1)/(1−u)^5 ≈ 5.0000000000000036u: the X² term passes five
-// roundings (dx, twice as it is squared; the square; the sum of squares; D) and M may sit five roundings
-// low. The bound, computed as RN(RN(M·2^-50) + c) ≥ (M·2^-50 − η + c)(1 − u), covers k·M when
-// 2^-50(1 − u) ≥ k: 8u against the design note's 5.0001u, tight to a factor 1.6.
-inline constexpr double kRelative = 0x1p-50;
-
-// kAbsolute = 2^-1072 = 8η: Stage A's absolute term c. Inputs dx, dy, s carry no absolute error (b = 0);
-// the three squares may underflow, each by ≤ η, and those errors pass through at most three roundings:
-// γ = 3k + 3(1+u)^3 ≈ 3. The bound needs (c − η)(1 − u) ≥ γη, i.e. c ≥ c_min ≈ 4.0000000000000027η;
-// 2^-1073 = 4η is just short, 2^-1072 = 8η is the least power of two above: tight to a factor 2.
-inline constexpr double kAbsolute = 0x1p-1072;
-
-// kAbsoluteRescaled = 2^-1070 = 32η: the absolute term of Stage A'. After rescaling, |dx|, |dy|, s < 4 and
-// each carries an absolute error a ≤ η(1 + 2^-1020) (η from the scaling, 2η·2^-1022 from halving when a
-// difference overflowed) on top of its rounding; a square then errs by b = 2Ra(1+u) + a², R = (4 + a)/(1−u),
-// so b ≈ 8η, and c_min = η + γ(b + η)/(1 − u) ≈ 28η. 32η is the least power of two above: tight to 8/7.
-inline constexpr double kAbsoluteRescaled = 0x1p-1070;
-
-// kRescaleBelow = 2^-900: intersect_exact tries Stage A' only when M is infinite or below this. It is a
-// speed choice, not a correctness one (every stage is exact whatever it is): above 2^-900 Stage A's
-// absolute term is under 2^-122·M·2^-50, so rescaling would give the same verdict and only cost time.
-inline constexpr double kRescaleBelow = 0x1p-900;
-
-}  // namespace filter
+// The bounds of the filter (kRelative, kAbsolute, kAbsoluteRescaled, kRescaleBelow), each with its derivation, are
+// in impl/double_bounds.hpp, namespace filter.
 
 // Stage A's two computed terms from q = RN(RN(dx²) + RN(dy²)) and s, where dx, dy, s are X, Y, S rounded once
 // each (plus, in Stage A', the absolute error kAbsoluteRescaled allows for): D = RN(s² − q), the computed F,

@@ -1,5 +1,5 @@
 // RN(p + v/60) over binary64. The algorithm, its design and its proofs of every step are in docs/rounding.md,
-// and the constants with their derivations in rounding.hpp.
+// and the constants with their derivations in rounding.hpp and impl/double_bounds.hpp.
 //
 // Compiled with -ffp-contract=off: every + and * below is one IEEE operation, rounded once, and an FMA
 // happens only where std::fma is written.

@@ -29,6 +29,8 @@
 // whole program must be compiled one way or the other (the choice is made in rounding.cpp only).
 #pragma once
 
+#include "impl/double_bounds.hpp"
+
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -51,28 +53,8 @@ inline constexpr double kRemainderLow = 4.0;    // a power of two
 // a relative error of u/8.
 inline constexpr double kC = 0x1.1111111111111p-6;
 
-// |v| above this and the FMA-free remainder (v − 64q) + 4q may overflow in 64q. For |v| ≤ kRemainderGuard,
-// |q| = RN(|v|·C) ≤ RN(kRemainderGuard·C) and 64·that ≤ 64·0.93·(1/60)(1 + 2^-52)·DBL_MAX ≈ 0.992·DBL_MAX,
-// finite (the exact bound is 0.9375·2^1024; 0.93 leaves room). Only the FMA-free build uses it.
-inline constexpr double kRemainderGuard = 0.93 * std::numeric_limits<double>::max();
-
-// The certificate's error bound B = RN(RN(RN(|e| + |c|) + 2^-1022)·2^-50) needs B ≥ 3u(|e| + |c|) + 2η.
-// 2^-50 = 8u, and 2^-1022·2^-50 = 2^-1072 = 8η. The first two roundings lose at most a factor (1 − u)
-// each, the product at most η (it is exact unless subnormal), so B ≥ 8u(1 − u)²(|e| + |c|) + 8η(1 − u) − η
-// ≥ 7.9u(|e| + |c|) + 3η: a margin of more than 2 on both terms. 2^-1022 is the smallest normal double:
-// no operand of the bound is subnormal for ordinary data (see bound_of in rounding.cpp for why that matters).
-inline constexpr double kBoundScale = 0x1p-50;     // 8u
-inline constexpr double kBoundOffset = 0x1p-1022;  // DBL_MIN; times kBoundScale it is 2^-1072 = 8η
-
-// Cancellation path: if |RN(p + q)| ≤ 2^-8|q| then p/(−q) ∈ [1 − 2^-7, 1 + 2^-7] ⊂ [1/2, 2], so p + q is
-// exact (Sterbenz), and |60s + r| ≤ 60·2^-8·|q| + |r| < 0.47·2^(e_q+1) + 2^(e_q−45) < 2^e_q, a multiple of
-// ulp(q) = 2^(e_q−52): fewer than 2^52 units, so fma(60, s, r) is exact.
-inline constexpr double kCancellationRatio = 0x1p-8;
-
-// Tiny path: every double is a multiple of 2^-1074, so 60p + v is; below 2^-1021 = 2^53·2^-1074 it has at
-// most 53 significant bits and is a double, so fma(60, p, v) is exact. RN is monotone and 2^-1021 is a
-// double, so |RN(60p + v)| < 2^-1021 implies |60p + v| < 2^-1021.
-inline constexpr double kTinyLimit = 0x1p-1021;
+// The fast path's and the fallback's bounds (kRemainderGuard, kBoundScale, kBoundOffset, kCancellationRatio,
+// kTinyLimit), each with its derivation, are in impl/double_bounds.hpp, namespace rounding.
 
 // The batch form works in blocks of this many elements: a block's reject flags live on the stack (2 KiB).
 inline constexpr std::size_t kBatchBlock = 256;

@@ -1,6 +1,7 @@
-// The pair list's bounds (impl/pair_list.hpp), each recomputed exactly and each put at its edge: a world in
-// which a pair meets exactly when the list's horizon ends, so that a bound any lower lets the pair escape
-// the list and the engine misses the contact that step_all_pairs finds.
+// The pair list's bounds (impl/pair_list.hpp, their constants in impl/double_bounds.hpp), each recomputed
+// exactly and each put at its edge: a world in which a pair meets exactly when the list's horizon ends, so
+// that a bound any lower lets the pair escape the list and the engine misses the contact that step_all_pairs
+// finds.
 #include "impl/pair_list.hpp"
 
 #include <gtest/gtest.h>
