@@ -7,7 +7,7 @@
 // order is part of each construction (where the least contact sits, which circles come last), so that, unlike
 // the small families, a big world is not shuffled. Draws come from the case's own rc::Random, in statement
 // order, so that a seed gives the same world on every compiler.
-#include "properties/boundaries.hpp"
+#include "properties/detail/boundaries.hpp"
 
 #include <algorithm>
 #include <array>
@@ -19,8 +19,7 @@
 #include <utility>
 #include <vector>
 
-namespace circles::properties::gen {
-namespace {
+namespace circles::properties::detail {
 
 using spec::CircleDoubles;
 using I = std::int64_t;
@@ -42,6 +41,8 @@ class Draw {
  private:
   rc::Random random_;
 };
+
+namespace {
 
 // A circle whose vy differs from that of the 4094 circles made before and after it, and from those 2^8 and 2^16
 // before and after it (the k-th circle made gets vy = (k mod 4095)/8 − 256 shifted by a per-world offset), so
@@ -98,6 +99,8 @@ Circles random_world(std::size_t n, Draw& draw) {
   }
   return w;
 }
+
+}  // namespace
 
 // sizes: a world that crosses a power of two p: p + 1, p − 1 or p circles; above the largest p with p + 1 <= max,
 // a last level of max circles itself when max is more, so that the limit is reached.
@@ -311,23 +314,14 @@ Circles big_chains(std::uint64_t round, std::size_t max, Draw& draw) {
   return random_world(kCircles[level(round, levels_up_to(kCircles, max))], draw);
 }
 
-}  // namespace
+}  // namespace circles::properties::detail
+
+namespace circles::properties::gen {
 
 Circles big_world(Family family, std::uint64_t round, std::size_t max_circles, rc::Random random) {
-  Draw draw(std::move(random));
-  const std::size_t max = std::max(max_circles, kMinMaxCircles);
-  switch (family) {
-    case Family::sizes: return sizes(round, max, draw);
-    case Family::crowds: return crowds(round, max, draw);
-    case Family::cell_crowds: return cell_crowds(round, max, draw);
-    case Family::radius_spread: return radius_spread(round, max, draw);
-    case Family::long_rows: return long_rows(round, max, draw);
-    case Family::index_bits: return index_bits(round, max, draw);
-    case Family::order_borders: return order_borders(round, max, draw);
-    case Family::big_chains: return big_chains(round, max, draw);
-    default: break;
-  }
-  return {};
+  if (!row(family).build_big) return {};
+  detail::Draw draw(std::move(random));
+  return row(family).build_big(round, std::max(max_circles, kMinMaxCircles), draw);
 }
 
 }  // namespace circles::properties::gen
