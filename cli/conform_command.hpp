@@ -26,11 +26,21 @@ struct ConformCommandOptions {
   bool threads_given = false;
   std::string exec;               // --exec COMMAND: check this program instead of an engine ("" for none)
   double timeout = 10;            // --timeout: seconds to wait for each answer of the program
-  std::size_t max_circles = properties::kDefaultMaxCircles;  // --max-circles: the most circles of a big world
+  // --max-circles: the most circles of a big world, when max_circles_given (else the fixed schedule's
+  // properties::kDefaultMaxCircles, or a budget run's conform::kBudgetMaxCircles)
+  std::size_t max_circles = properties::kDefaultMaxCircles;
+  bool max_circles_given = false;
+  double budget = 60;             // --budget SECONDS of a run with no fixed schedule (no --cases, --shard or --case)
+  bool budget_given = false;
+  unsigned jobs = 0;              // --jobs N copies of the program at once (0: one per core)
+  std::size_t circles = 0;        // --circles N: the ladder size of the case --case replays, when circles_given
+  bool circles_given = false;
   std::string level = "exact";    // --level: exact, faithful or ulps:K (properties::parse_level)
   std::string profile = "resolved";  // --profile: resolved or literal
   std::string shard = "0/1";      // --shard i/n
-  std::uint64_t cases = 1000;     // --cases
+  bool shard_given = false;
+  std::uint64_t cases = 1000;     // --cases, when cases_given (else the budget decides)
+  bool cases_given = false;
   std::uint64_t seed = 1;         // --seed (the program draws a random one when it is not given)
   std::uint64_t steps = 1;        // --steps chained per case
   std::uint64_t only_case = 0;    // --case I, when case_given

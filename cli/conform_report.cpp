@@ -7,6 +7,7 @@
 #include "pictures/counterexample_svg.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <map>
 #include <span>
 #include <sstream>
@@ -120,6 +121,18 @@ void print_families(std::ostream& out, std::span<const conform::FamilyResult> fa
   out << line << "\n";
 }
 
+// How far a budget run went: "big worlds up to 262,144 circles, 57 s of 60".
+std::string how_far(const Verdict& v) {
+  const auto grouped = [](std::uint64_t n) {
+    std::string digits = std::to_string(n);
+    for (std::size_t at = digits.size(); at > 3; at -= 3) digits.insert(at - 3, ",");
+    return digits;
+  };
+  char seconds[64];
+  std::snprintf(seconds, sizeof seconds, "%.0f s of %g", v.elapsed.count(), *v.options.budget);
+  return (v.largest_world ? "big worlds up to " + grouped(v.largest_world) + " circles, " : std::string()) + seconds;
+}
+
 // The first line of a run's verdict without a counterexample, or of its --keep-going table: "circles conform:
 // CANDIDATE conforms: 1000 cases (2 skipped: …), 1 step each (2 for tangent-after-step, whose boundary comes
 // only at step 2), level exact, seed 3, resolved profile"; against an expectation file with failures listed,
@@ -156,6 +169,7 @@ std::string summary_line(const Verdict& v) {
   line += ", level " + o.level.text() + ", seed " + std::to_string(o.seed) + ", " + properties::name(o.profile) +
           " profile";
   if (o.shards > 1) line += ", shard " + std::to_string(o.shard) + "/" + std::to_string(o.shards);
+  if (o.budget && !o.only_case) line += "; " + how_far(v);
   return line;
 }
 

@@ -16,6 +16,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <stdexcept>
@@ -67,6 +68,9 @@ class Candidate {
   virtual void finish() {}
   // "the double engine", "the program `python3 step.py`": for messages.
   virtual std::string name() const = 0;
+  // Another candidate like this one, to ask other cases at the same time (--jobs); none for one that cannot be
+  // copied, which then answers every case itself. Throws BrokenCandidate.
+  virtual std::unique_ptr<Candidate> copy() const { return nullptr; }
   // The option of `circles conform` that selects this candidate, quoted for sh: "--engine double", "--exec
   // 'python3 step.py'"; "" for one that no command line selects (a function in a test). Replay lines start
   // with it (conform/replay.hpp).
@@ -80,6 +84,7 @@ class EngineCandidate : public Candidate {
   Circles answer(const Circles& world, std::uint64_t id) override;
   std::string name() const override;
   std::string option() const override;
+  std::unique_ptr<Candidate> copy() const override { return std::make_unique<EngineCandidate>(engine_, threads_); }
 
  private:
   const engines::EngineEntry& engine_;
@@ -104,6 +109,7 @@ class ProcessCandidate : public Candidate {
   // Closes the program's stdin and waits, up to the deadline, for it to exit 0.
   void finish() override;
   std::string name() const override { return "the program `" + command_ + "`"; }
+  std::unique_ptr<Candidate> copy() const override { return std::make_unique<ProcessCandidate>(command_, deadline_); }
   std::string option() const override;
 
   // The deadline for the answer to a world of `circles` circles: `deadline` up to kDeadlineCircles circles,

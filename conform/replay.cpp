@@ -21,7 +21,8 @@ std::string shell_quoted(std::string_view word) {
   return quoted;
 }
 
-std::string replay_command(std::string_view candidate, const Options& options, std::optional<std::uint64_t> case_index) {
+std::string replay_command(std::string_view candidate, const Options& options, std::optional<std::uint64_t> case_index,
+                           std::optional<std::size_t> circles) {
   std::string command = "circles conform";
   const auto add = [&command](std::string_view option, std::string_view value) {
     command.append(" ").append(option);
@@ -31,6 +32,7 @@ std::string replay_command(std::string_view candidate, const Options& options, s
   if (case_index) {
     add("--seed", std::to_string(options.seed));
     add("--case", std::to_string(*case_index));
+    if (circles) add("--circles", std::to_string(*circles));
   } else {
     add("--save", shell_quoted(options.save.string()));
     add("--cases", "0");
@@ -38,7 +40,7 @@ std::string replay_command(std::string_view candidate, const Options& options, s
   add("--level", shell_quoted(options.level.text()));
   if (options.steps > 1) add("--steps", std::to_string(options.steps));
   if (options.profile == Profile::literal) add("--profile", "literal");
-  if (options.max_circles != properties::kDefaultMaxCircles) add("--max-circles", std::to_string(options.max_circles));
+  if (!options.budget && options.max_circles != properties::kDefaultMaxCircles) add("--max-circles", std::to_string(options.max_circles));
   if (!options.skip.empty()) {
     std::string checked, skipped;
     for (const properties::Family f : properties::families(options.profile)) {

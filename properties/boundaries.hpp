@@ -128,9 +128,12 @@ rc::Gen<Circles> boundary_world(Family family, Profile profile);
 
 // The world of the big family's `round`-th case (its cases counted from 0), at most max(max_circles,
 // kMinMaxCircles) circles, from `random`: the first rounds go up in size until the family's largest world, the
-// rounds after come mostly small (docs/conform.md, "Big worlds"). Not shuffled: each family places its circles
-// in the index order on purpose. properties/detail/big_worlds.cpp builds them.
-Circles big_world(Family family, std::uint64_t round, std::size_t max_circles, rc::Random random);
+// rounds after come mostly small (docs/conform.md, "Big worlds"); with `largest`, every round's world is of the
+// family's largest size under the limit (a step of conform's ladder of sizes). Not shuffled: each family places
+// its circles in the index order on purpose. properties/detail/big_worlds.cpp builds them. A small family's is
+// empty.
+Circles big_world(Family family, std::uint64_t round, std::size_t max_circles, rc::Random random,
+                  bool largest = false);
 
 // A family of `profile` (uniformly; shrinks towards lattice) and a world of it.
 rc::Gen<std::pair<Family, Circles>> boundary_case(Profile profile);

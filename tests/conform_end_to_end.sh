@@ -83,7 +83,7 @@ saves_a_counterexample_and_replays_it_first)
   grep -q "^saved: $saved\$" "$dir/out" || fail "the report does not name $saved: $(cat "$dir/out")"
   run_conform 1 --seed 4 --cases 0 --save "$dir/corpus" --exec "$naive"
   grep -q "^counterexample: stored in $saved, replayed first" "$dir/out" || fail "not replayed: $(cat "$dir/out")"
-  run_conform 0 --seed 4 --save "$dir/corpus" --exec "python3 $source_dir/examples/python/step.py"
+  run_conform 0 --seed 4 --budget 20 --save "$dir/corpus" --exec "python3 $source_dir/examples/python/step.py"
   grep -q "corpus: 1 stored counterexample replayed from $dir/corpus" "$dir/out" || fail "$(cat "$dir/out")"
   ;;
 draws_the_picture_where_svg_says)
