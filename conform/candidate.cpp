@@ -48,8 +48,11 @@ std::string seconds(std::chrono::milliseconds deadline) {
 
 }  // namespace
 
-ProcessCandidate::ProcessCandidate(std::string command, std::chrono::milliseconds deadline)
-    : command_(std::move(command)), deadline_(deadline) {
+ProcessCandidate::ProcessCandidate(std::string command, std::chrono::milliseconds deadline,
+                                   std::shared_ptr<Deadlines> deadlines)
+    : command_(std::move(command)),
+      deadline_(deadline),
+      deadlines_(deadlines ? std::move(deadlines) : std::make_shared<Deadlines>(deadline)) {
   std::signal(SIGPIPE, SIG_IGN);
   start();
 }
@@ -191,15 +194,11 @@ void ProcessCandidate::write_requests(std::string_view lines, std::span<const st
   }
 }
 
-std::chrono::milliseconds ProcessCandidate::deadline_for(std::chrono::milliseconds deadline, std::size_t circles) {
-  if (circles <= kDeadlineCircles) return deadline;
-  const double scale = static_cast<double>(circles) / kDeadlineCircles;
-  const double ms = static_cast<double>(deadline.count()) * scale * scale;
-  return std::chrono::milliseconds(ms < 1e15 ? static_cast<std::int64_t>(ms) : std::int64_t{1'000'000'000'000'000});
-}
-
 Circles ProcessCandidate::read_answer(const Circles& world, std::uint64_t id) {
-  std::string text = read_line(id, deadline_for(deadline_, world.size()));
+  std::string text = read_line(id, deadlines_->for_world(world.size()));
+  const auto now = std::chrono::steady_clock::now();
+  deadlines_->answered(world.size(), now - asked_);
+  asked_ = now;
   ++lines_;
   Line line;
   try {
@@ -269,6 +268,7 @@ void ProcessCandidate::answer_batches(std::span<const Circles> worlds, std::uint
       ends.push_back(lines.size());
     }
     unanswered_ += last - first;
+    asked_ = std::chrono::steady_clock::now();
     write_requests(lines, ends, first_id + first);
     for (; first < last; ++first) {
       answers.push_back(read_answer(worlds[first], first_id + first));

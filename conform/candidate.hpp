@@ -10,6 +10,7 @@
 //                     afresh, so that no answer it wrote to an earlier request is read as another's.
 #pragma once
 
+#include "conform/deadline.hpp"
 #include "engines/registry.hpp"
 #include "formats/plain_line.hpp"
 #include "formats/protocol.hpp"
@@ -95,7 +96,10 @@ class ProcessCandidate : public Candidate {
  public:
   // Starts the program. Throws BrokenCandidate if it cannot be started. Ignores SIGPIPE in this process from
   // then on (a write to a candidate that exited must be an error to report, not a signal that kills us).
-  ProcessCandidate(std::string command, std::chrono::milliseconds deadline);
+  // `deadline` is the floor of each answer's deadline, which grows with the program's measured speed
+  // (conform/deadline.hpp); copies share that measure.
+  ProcessCandidate(std::string command, std::chrono::milliseconds deadline,
+                   std::shared_ptr<Deadlines> deadlines = nullptr);
   ~ProcessCandidate() override;
   ProcessCandidate(const ProcessCandidate&) = delete;
   ProcessCandidate& operator=(const ProcessCandidate&) = delete;
@@ -109,14 +113,10 @@ class ProcessCandidate : public Candidate {
   // Closes the program's stdin and waits, up to the deadline, for it to exit 0.
   void finish() override;
   std::string name() const override { return "the program `" + command_ + "`"; }
-  std::unique_ptr<Candidate> copy() const override { return std::make_unique<ProcessCandidate>(command_, deadline_); }
+  std::unique_ptr<Candidate> copy() const override {
+    return std::make_unique<ProcessCandidate>(command_, deadline_, deadlines_);
+  }
   std::string option() const override;
-
-  // The deadline for the answer to a world of `circles` circles: `deadline` up to kDeadlineCircles circles,
-  // and above it `deadline` · (circles / kDeadlineCircles)², as an O(n²) step's time grows: 16 times as long at
-  // 2048 circles, 64 times at 4097 (so 10 s becomes 640 s, time for a step in rationals that tests every pair).
-  static std::chrono::milliseconds deadline_for(std::chrono::milliseconds deadline, std::size_t circles);
-  static constexpr std::size_t kDeadlineCircles = 512;
 
   // The most bytes of request lines written before their answers are read. Why a bound, and why this one: we
   // write a whole batch before reading any answer, while the candidate may answer each line as it reads it, so
@@ -148,6 +148,9 @@ class ProcessCandidate : public Candidate {
 
   std::string command_;
   std::chrono::milliseconds deadline_;
+  std::shared_ptr<Deadlines> deadlines_;
+  std::chrono::steady_clock::time_point asked_{};  // when the answer being read was asked for: its request's
+                                                   // write, or the previous answer in a batch
   pid_t pid_ = -1;
   int to_child_ = -1, from_child_ = -1;
   std::string buffer_;

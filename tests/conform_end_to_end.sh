@@ -173,6 +173,15 @@ exits_2_for_a_count_beyond_2_63_or_threads_with_a_program)
   [ "$(cat "$dir/err")" = "circles conform: --threads sets the threads of an --engine; a program given with --exec runs its own" ] ||
     fail "unexpected message: $(cat "$dir/err")"
   ;;
+gives_a_slow_program_the_time_its_speed_needs_and_stops_one_that_hangs)
+  # tests/slow_candidate.py answers right after 5 ms a circle: its worlds of 100 or more circles take longer than
+  # the 0.5 s floor, and the deadlines its earlier answers predict give them that time. The same program hanging
+  # after 10 answers is stopped.
+  slow="python3 $source_dir/tests/slow_candidate.py $circles 0.005"
+  run_conform 0 --cases 25 --seed 1 --timeout 0.5 --jobs 1 --exec "$slow"
+  run_conform 2 --cases 25 --seed 1 --timeout 0.5 --jobs 1 --exec "$slow 10"
+  grep -q "gave no answer to request 11 within " "$dir/err" || fail "$(cat "$dir/out" "$dir/err")"
+  ;;
 keeps_going_and_gates_on_an_expectation_file)
   # The naive example's two mistakes (hypot distance, p + v*(1/60)) reach every family but tangent-after-step,
   # signed-zeros and long-rows in seed 1's 1000 cases: on their worlds there its answers are the nearest doubles.
