@@ -66,12 +66,19 @@ conform::Options check_options(const ConformCommandOptions& given) {
 Verdict verdict_of(const ConformCommandOptions& given, const conform::Options& options) {
   try {
     std::unique_ptr<conform::Candidate> candidate;
-    if (given.exec.empty())
+    std::shared_ptr<conform::RequestLog> log;
+    if (given.exec.empty()) {
       candidate = std::make_unique<conform::EngineCandidate>(engines::engine(given.engine), given.threads);
-    else
-      candidate = std::make_unique<conform::ProcessCandidate>(
+    } else {
+      if (!given.log.empty()) log = std::make_shared<conform::RequestLog>(given.log);
+      auto program = std::make_unique<conform::ProcessCandidate>(
           given.exec, std::chrono::milliseconds(static_cast<long long>(std::ceil(given.timeout * 1000))));
-    return conform::check(*candidate, options);
+      program->log_to(log);
+      candidate = std::move(program);
+    }
+    Verdict verdict = conform::check(*candidate, options);
+    if (log) log->commit();
+    return verdict;
   } catch (const conform::BrokenCandidate& e) {
     return conform::unchecked("the program `" + given.exec + "`", options, e.what());
   }
@@ -208,6 +215,8 @@ CLI::App* add_conform_command(CLI::App& app, ConformCommandOptions& options) {
                      "N", 0, kMaxCases);
   takes_output_file(conform->add_option(
       "--report", options.report, "Also write the verdict as JSON to FILE (conform.md in the docs, Reports for CI)"));
+  takes_output_file(conform->add_option(
+      "--log", options.log, "Write every request line sent to the program and every answer line read to FILE"));
   takes_output_file(
       conform->add_option("--junit", options.junit, "Also write the verdict as JUnit XML to FILE, a test case per family"));
   conform->add_flag("--keep-going", options.keep_going,
@@ -257,6 +266,11 @@ int conform_command(const ConformCommandOptions& given, std::ostream& out, std::
     err << "circles conform: --engine and --exec exclude each other: check one candidate at a time\n";
     return 2;
   }
+  if (given.exec.empty() && !given.log.empty()) {
+    err << "circles conform: --log writes the lines a program given with --exec reads and writes; an --engine "
+           "runs in process\n";
+    return 2;
+  }
   if (!given.exec.empty() && given.threads_given) {
     err << "circles conform: --threads sets the threads of an --engine; a program given with --exec runs its own\n";
     return 2;
@@ -290,6 +304,10 @@ int conform_command(const ConformCommandOptions& given, std::ostream& out, std::
     err << "circles conform: " << e.what() << "\n";
     return 2;
   } catch (const engines::UnknownEngine& e) {  // the program's --engine refuses it while parsing
+    progress.finish();
+    err << "circles conform: " << e.what() << "\n";
+    return 2;
+  } catch (const formats::OutputError& e) {  // --log
     progress.finish();
     err << "circles conform: " << e.what() << "\n";
     return 2;

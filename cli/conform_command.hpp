@@ -54,6 +54,7 @@ struct ConformCommandOptions {
   std::string svg;                // --svg FILE ("" for none)
   std::string report;             // --report FILE.json ("" for none)
   std::string junit;              // --junit FILE.xml ("" for none)
+  std::string log;                // --log FILE: every request and answer line of the program ("" for none)
   std::string expect;             // --expect FILE ("" for none); implies keep_going
   std::string write_expect;       // --write-expect FILE ("" for none); implies keep_going
   std::ostream* progress = nullptr;  // where a run longer than 2 s draws its progress line (a terminal), or none

@@ -78,13 +78,14 @@ void print_worlds(const Verdict& v, std::ostream& out) {
               v.options.profile == Profile::literal ? "expected (the literal oracle's step, rounded to nearest)"
                                                     : "expected (the correctly rounded oracle step)",
               c.expected);
-  print_world(out, "answered", c.actual);
+  if (c.fault.empty()) print_world(out, "answered", c.actual);
 }
 
 // Draws the picture of the run's counterexample where picture_path says, if anywhere, and says where.
 void draw_picture(const Verdict& v, const std::filesystem::path& svg, std::ostream& out) {
   const Counterexample& c = *v.counterexample;
   const properties::Difference& d = c.difference;
+  if (!c.fault.empty()) return;  // no answer to draw
   if (const std::filesystem::path file = picture_path(v, svg); !file.empty()) {
     try {
       formats::write_file(file.string(), file.string(),

@@ -37,11 +37,43 @@ using formats::parse_line;
 using formats::format_line;
 using formats::kId;
 
-// The candidate cannot be checked: it crashed, exited, hung past its deadline, wrote a malformed line, a wrong
-// id or a wrong number of circles. what() says which, for which request.
+// What a candidate did instead of answering a request: it exited or was killed (exited), gave no answer within
+// its deadline (hung), or wrote a malformed line, a wrong id or a wrong number of circles (malformed); or
+// something that no world explains (other: a pipe that cannot be made, a program that cannot start).
+enum class Fault { other, exited, hung, malformed };
+// "crashed or exited", "hung", "wrote a malformed answer", "" for other.
+const char* name(Fault fault);
+
+// The candidate broke instead of answering: what() says how, for which request; fault() is its kind. conform
+// reports a fault on a world as a counterexample (conform/conform.hpp), and one before the program's first
+// answer, or of kind other, as a candidate it cannot check.
 class BrokenCandidate : public std::runtime_error {
  public:
-  using std::runtime_error::runtime_error;
+  explicit BrokenCandidate(const std::string& what, Fault fault = Fault::other)
+      : std::runtime_error(what), fault_(fault) {}
+  Fault fault() const noexcept { return fault_; }
+
+ private:
+  Fault fault_;
+};
+
+// Where `circles conform --log FILE` writes every request line sent and every answer line read, as they go, each
+// prefixed by the copy of the program (--jobs) that it went to or came from: "1> " for a request to copy 1,
+// "1< " for an answer from it. Shared by the copies.
+class RequestLog {
+ public:
+  explicit RequestLog(std::string path);
+  ~RequestLog();
+  RequestLog(const RequestLog&) = delete;
+  RequestLog& operator=(const RequestLog&) = delete;
+  // The lines of `text`, each prefixed. Throws formats::OutputError.
+  void write(unsigned copy, char direction, std::string_view text);
+  // Closes the file, in place or renamed over its path. Throws formats::OutputError.
+  void commit();
+
+ private:
+  struct File;
+  std::unique_ptr<File> file_;
 };
 
 // What Candidate::answer_all read: the answers to its first answers.size() requests, in order, and, when that is
@@ -113,9 +145,9 @@ class ProcessCandidate : public Candidate {
   // Closes the program's stdin and waits, up to the deadline, for it to exit 0.
   void finish() override;
   std::string name() const override { return "the program `" + command_ + "`"; }
-  std::unique_ptr<Candidate> copy() const override {
-    return std::make_unique<ProcessCandidate>(command_, deadline_, deadlines_);
-  }
+  std::unique_ptr<Candidate> copy() const override;
+  // Writes every request and answer line to `log` from now on.
+  void log_to(std::shared_ptr<RequestLog> log) { log_ = std::move(log); }
   std::string option() const override;
 
   // The most bytes of request lines written before their answers are read. Why a bound, and why this one: we
@@ -149,6 +181,9 @@ class ProcessCandidate : public Candidate {
   std::string command_;
   std::chrono::milliseconds deadline_;
   std::shared_ptr<Deadlines> deadlines_;
+  std::shared_ptr<RequestLog> log_;
+  unsigned copy_ = 1;  // which copy of the program this is, from 1, for the log
+  mutable unsigned copies_made_ = 0;
   std::chrono::steady_clock::time_point asked_{};  // when the answer being read was asked for: its request's
                                                    // write, or the previous answer in a batch
   pid_t pid_ = -1;

@@ -47,6 +47,13 @@ std::size_t Checker::run_all(std::span<Chain> chains) {
     for (std::size_t i = 0; i < answers.size(); ++i) {
       if (!chains[whose[i]].judge(std::move(answers[i]), std::move(expected[i]))) return whose[i];
     }
+    // A fault on a world (a crash, a hang, a malformed line) fails the chain asked, as a wrong answer would; the
+    // caller decides whether a fault before any answer means the program cannot be checked at all.
+    if (read.broken && read.broken->fault() != Fault::other) {
+      const std::size_t at = answers.size();
+      chains[whose[at]].broke(std::move(expected[at]), name(read.broken->fault()), read.broken->what());
+      return whose[at];
+    }
     if (read.broken) throw *read.broken;
     first = next;
   }

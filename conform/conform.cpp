@@ -29,6 +29,11 @@ using properties::NoAnswer;
 // a world of 10^5 circles down to a dozen (about k log2(n/k) + k queries for k circles, then one per circle
 // left to show that none can go), bounded for a slow program.
 constexpr int kMaxShrinkQueries = 2000;
+// Shrinking a hang asks at most this many worlds, each of which may cost the program's whole deadline.
+constexpr int kMaxHangShrinkQueries = 8;
+// Shrinking one counterexample stops after this long, whatever its budget of queries: a program that crashes is
+// started afresh for each world asked, and a slow one takes its time on each.
+constexpr std::chrono::seconds kMaxShrinkTime{60};
 // The most circles of a small family's world (properties/boundaries.hpp): bigger worlds shrink by delta
 // debugging over their circles before anything else.
 constexpr std::size_t kSmallWorld = 8;
@@ -84,6 +89,8 @@ using Ending = Chain::Ending;
 // and simplifying keep a failure's kind, so that a candidate that answers NaN on one world and a finite wrong
 // value on a simpler one is shown with its NaN, the fault it was caught by, rather than slipping to another.
 bool same_kind(const Failure& a, const Failure& b) {
+  if (a.fault != b.fault) return false;
+  if (!a.fault.empty()) return true;  // the same fault: a crash shrinks to a crash, a hang to a hang
   const double x = a.difference.actual, y = b.difference.actual;
   if (std::isnan(x) || std::isnan(y)) return std::isnan(x) && std::isnan(y);
   return std::isfinite(x) == std::isfinite(y) && (std::isfinite(x) || x == y);
@@ -253,6 +260,7 @@ class Run {
     c.expected = std::move(failure.expected);
     c.actual = std::move(failure.actual);
     c.difference = std::move(failure.difference);
+    c.fault = std::move(failure.fault);
     const bool first = !verdict_.counterexample;
     if (result) {
       result->status = FamilyStatus::failed;
@@ -374,6 +382,12 @@ class Run {
       const auto [from, to] = units[u];
       std::size_t k = from;
       for (const std::size_t f : outcomes[u].failed) {
+        // A program that breaks on the first world of a run, before any answer, cannot be checked at all; on the
+        // one case of --case, it breaks on that case's world, as its replay line says.
+        const Failure& failure = *chains[from + f].failure();
+        if (!failure.fault.empty() && failure.step == 1 && from + f == 0 && verdict_.cases == 0 &&
+            verdict_.replayed == 0 && !options_.only_case)
+          throw BrokenCandidate(failure.difference.decision.substr(std::string_view("none: ").size()));
         for (; k <= from + f; ++k) count(stage[k], chains[k]);
         FamilyResult& family = verdict_.families[stage[from + f].family];
         if (family.status != FamilyStatus::failed) {
@@ -460,7 +474,10 @@ class Run {
     Counterexample counterexample;
     counterexample.shrink_path = {world.value()};
     counterexample.circles_before = world.value().size();
-    int queries = 0;
+    // Each world on which a program hangs costs its deadline: a hang is shrunk a few worlds at most (the queries
+    // count up to kMaxShrinkQueries from further on).
+    int queries = failure.fault == name(Fault::hung) ? kMaxShrinkQueries - kMaxHangShrinkQueries : 0;
+    shrink_until_ = std::chrono::steady_clock::now() + kMaxShrinkTime;
     // A world bigger than the small families' loses its circles by delta debugging first; a small family's
     // world then shrinks through its generator's shrinks (RapidCheck's), which drop circles one at a time and
     // simplify the family's integers.
@@ -487,11 +504,13 @@ class Run {
         }
       }
     }
-    if (options_.simplify) simplify(world.value(), steps, failure, counterexample);
+    if (options_.simplify && failure.fault.empty()) simplify(world.value(), steps, failure, counterexample);
     counterexample.family = properties::name(families[family]);
     counterexample.case_index = c;
     counterexample.replay = replay_command(candidate_.option(), options_, c, circles);
-    if (!options_.save.empty()) {
+    if (!options_.save.empty() && !failure.fault.empty()) {
+      counterexample.not_saved = "a program that " + failure.fault + " is replayed by its replay line, not stored";
+    } else if (!options_.save.empty()) {
       const StoredCounterexample stored{options_.profile, failure.input, options_.level.text(), counterexample.family,
                                         candidate_.name(), options_.seed, c, steps, failure.step, failure.expected,
                                         failure.actual, failure.difference};
@@ -509,6 +528,7 @@ class Run {
   // crashes, hangs or writes a malformed line does not show the wrong answer being shrunk; the next world is
   // asked of the program started afresh).
   std::optional<Failure> still_fails(const Circles& w, std::uint64_t steps, const Failure& failure) {
+    if (std::chrono::steady_clock::now() > shrink_until_) return std::nullopt;
     Ending e = Ending::checked;
     std::optional<Failure> f;
     try {
@@ -607,6 +627,7 @@ class Run {
   rc::Random stream_{options_.seed};
   std::vector<rc::Random> randoms_;
   std::vector<Failing> failing_;  // the first failing case of each family that fails, in case order
+  std::chrono::steady_clock::time_point shrink_until_{};  // when shrinking the counterexample at hand stops
 };
 
 }  // namespace

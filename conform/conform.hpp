@@ -130,6 +130,10 @@ struct Counterexample {
   std::uint64_t step = 1, steps = 1;           // the failing step of the chain (1-based) and the chain's length
   Circles input, expected, actual;             // the world asked at that step, and the two answers
   Difference difference;
+  // Not a wrong answer but none: how the program broke instead of answering ("crashed or exited", "hung", "wrote
+  // a malformed answer"; conform::Fault), `actual` empty and difference.decision the whole message. "" for a
+  // wrong answer.
+  std::string fault;
   // Shrinking: the world drawn, then each simpler w_0 that still failed, in order (the last the one reported):
   // first fewer circles (RapidCheck's shrinks), then numbers simplified one at a time.
   std::vector<Circles> shrink_path;
