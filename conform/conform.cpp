@@ -663,6 +663,9 @@ Verdict check(Candidate& candidate, const Options& options) {
   } catch (const ConformError& e) {
     could_check = false;
     verdict.error = e.what();
+  } catch (const spec::OutsideC& e) {  // a generated world conform's reference refuses: a bug of conform's own
+    could_check = false;
+    verdict.error = std::string("conform drew a world its reference refuses: ") + e.what();
   }
   // A family with no checked case did not pass: the run stopped (a counterexample, a fault) before it, or
   // replayed one case or the corpus alone.

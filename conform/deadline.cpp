@@ -1,6 +1,7 @@
 #include "conform/deadline.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 namespace circles::conform {
@@ -19,7 +20,10 @@ std::chrono::milliseconds Deadlines::for_world(std::size_t circles) const {
       seconds = kFactor * seconds_ * (n >= m ? (n / m) * (n / m) : n / m);
     }
   }
-  seconds = std::max(seconds, floor);
+  // The floor grows with the world too, as its square root: a world's time depends on its layout (a few giant
+  // circles, a dense cluster) as well as its size, and a program's big-world path may be many times slower on
+  // one world than on the last of the same size.
+  seconds = std::max(seconds, floor * std::sqrt(std::max(1.0, n / kFirstCircles)));
   // At most about 31,700 years: a count of milliseconds that no clock arithmetic overflows.
   const double ms = std::min(seconds * 1000, 1e15);
   return std::chrono::milliseconds(static_cast<std::int64_t>(ms));

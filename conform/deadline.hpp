@@ -5,7 +5,7 @@
 // The rule: before any answer, `floor` up to kFirstCircles circles and floor · (n / kFirstCircles)² above, as an
 // O(n²) step's time grows. After answers, with t the longest time taken by an answer to the largest world
 // answered so far, of m circles: kFactor · t · (n/m)² for a world of n >= m circles (the growth of a step that
-// tests every pair), kFactor · t · n/m for n < m; never less than `floor`. An answer's time is measured from its
+// tests every pair), kFactor · t · n/m for n < m; never less than `floor` · sqrt(n / kFirstCircles) (and `floor`). An answer's time is measured from its
 // request's write, or from the previous answer when requests are batched. The copies of a program (--jobs) share
 // one model, the same program's speed.
 #pragma once
@@ -27,7 +27,7 @@ class Deadlines {
 
   // How many times the predicted time an answer is given: room for a machine whose load changes while it runs,
   // for a garbage collector's pause, for a step whose time varies with the world's layout.
-  static constexpr double kFactor = 10;
+  static constexpr double kFactor = 20;
   // Before any answer, worlds up to this size get the floor.
   static constexpr std::size_t kFirstCircles = 512;
 

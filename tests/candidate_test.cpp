@@ -68,18 +68,21 @@ TEST(deadlines, before_any_answer_grow_with_the_square_of_the_circles_beyond_512
 TEST(deadlines, after_answers_follow_the_programs_own_speed_with_a_factor_and_a_floor) {
   using std::chrono::milliseconds;
   Deadlines d(1s);
-  d.answered(100, 0.5s);
+  d.answered(100, 0.25s);
   EXPECT_EQ(d.for_world(100), 5s);
   EXPECT_EQ(d.for_world(200), 20s);
   EXPECT_EQ(d.for_world(50), 2500ms);
   EXPECT_EQ(d.for_world(2), 1s);  // the floor
   d.answered(100, 0.1s);          // a faster answer to the same size: the slowest still counts
   EXPECT_EQ(d.for_world(100), 5s);
-  d.answered(400, 0.2s);          // a larger world: its time is the measure now
+  d.answered(400, 0.1s);          // a larger world: its time is the measure now
   EXPECT_EQ(d.for_world(800), 8s);
   EXPECT_EQ(d.for_world(10), 1s);
   d.answered(0, 100s);            // an empty world tells nothing
   EXPECT_EQ(d.for_world(800), 8s);
+  // The floor grows as the square root of the circles beyond 512: 4 times at 8192.
+  d.answered(8192, 0.001s);
+  EXPECT_EQ(d.for_world(8192), 4s);
 }
 
 // Programs that break the protocol: each is refused with what it did, and nothing of it outlives the check.

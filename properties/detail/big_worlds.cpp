@@ -8,6 +8,7 @@
 // the small families, a big world is not shuffled. Draws come from the case's own rc::Random, in statement
 // order, so that a seed gives the same world on every compiler.
 #include "properties/detail/boundaries.hpp"
+#include "properties/detail/draw.hpp"
 
 #include <algorithm>
 #include <array>
@@ -22,37 +23,6 @@
 namespace circles::properties::detail {
 
 using spec::CircleDoubles;
-using I = std::int64_t;
-
-// The case's random stream, and whether its world is the family's largest (a ladder's world).
-class Draw {
- public:
-  Draw(rc::Random random, bool largest) : random_(std::move(random)), largest_(largest) {}
-  // Uniform in [0, n), n > 0 (the modulo's bias, below 2^-40 for n < 2^24, does not matter here).
-  std::uint64_t below(std::uint64_t n) { return random_.next() % n; }
-  I between(I lo, I hi) { return lo + static_cast<I>(below(static_cast<std::uint64_t>(hi - lo + 1))); }
-  // A quarter in [-60, 60]: up to one unit of movement per step.
-  double velocity() { return static_cast<double>(between(-240, 240)) / 4; }
-  template <class T>
-  void shuffle(std::vector<T>& items) {
-    for (std::size_t k = items.size(); k > 1; --k) std::swap(items[k - 1], items[below(k)]);
-  }
-  // The round-th case's level among `levels` (0 … levels − 1): the largest for a ladder's world; else the first
-  // `levels` rounds go up one level each, so that a run of that many rounds has reached the largest; after them
-  // the ruler sequence 0, 1, 0, 2, 0, 1, 0, 3, … (the number of trailing zero bits of the round counted from
-  // there), so that a level's worlds come half as often as the level below's, and a long run's time stays
-  // dominated by its first cases.
-  std::size_t level(std::uint64_t round, std::size_t levels) const {
-    if (levels == 0) return 0;
-    if (largest_) return levels - 1;
-    if (round < levels) return static_cast<std::size_t>(round);
-    return std::min<std::size_t>(levels - 1, static_cast<std::size_t>(std::countr_zero(round - levels + 1)));
-  }
-
- private:
-  rc::Random random_;
-  bool largest_;
-};
 
 namespace {
 
@@ -105,12 +75,14 @@ Circles random_world(std::size_t n, Draw& draw) {
 }  // namespace
 
 // sizes: a world that crosses a power of two p: p + 1, p − 1 or p circles; above the largest p with p + 1 <= max,
-// a last level of max circles itself when max is more, so that the limit is reached.
+// a last level of max circles itself when max is more, so that the limit is reached. On the ladder (a budget
+// run), the swarm's world of max circles (detail/swarm.cpp), whose size is a rung: a power of two or the limit.
 Circles sizes(std::uint64_t round, std::size_t max, Draw& draw) {
   std::size_t powers = 0;  // the powers of two p = 16 · 2^l with p + 1 <= max
   while ((std::size_t{16} << powers) + 1 <= max) ++powers;
   const bool limit = (std::size_t{16} << (powers - 1)) + 1 < max;
   const std::size_t l = draw.level(round, powers + limit);
+  if (draw.largest()) return swarm(max, draw);  // a ladder's world: the swarm's
   if (l == powers) return random_world(max, draw);
   const std::size_t p = std::size_t{16} << l;
   const std::size_t side = round < powers + limit ? 1 : static_cast<std::size_t>(round % 3);  // +1, then −1, 0, +1, …
@@ -310,8 +282,10 @@ Circles order_borders(std::uint64_t round, std::size_t max, Draw& draw) {
   return w;
 }
 
-// big_chains: random_world at 64 … 512 circles, moving up to one unit a step, chained 3 steps.
+// big_chains: random_world at 64 … 512 circles, moving up to one unit a step, chained 3 steps; on the ladder, the
+// swarm's worlds, chained so.
 Circles big_chains(std::uint64_t round, std::size_t max, Draw& draw) {
+  if (draw.largest()) return swarm(max, draw);
   static constexpr std::array<std::size_t, 4> kCircles{64, 128, 256, 512};
   return random_world(kCircles[draw.level(round, levels_up_to(kCircles, max))], draw);
 }

@@ -41,4 +41,12 @@ Circles index_bits(std::uint64_t round, std::size_t max, Draw& draw);
 Circles order_borders(std::uint64_t round, std::size_t max, Draw& draw);
 Circles big_chains(std::uint64_t round, std::size_t max, Draw& draw);
 
+// ── The swarm (detail/swarm.cpp): a ladder's world of n circles with its own random subset of features ──────
+Circles swarm(std::size_t n, Draw& draw);
+// The most circles of a swarm world in a frame near 2^1000 or near the subnormals: the double engine, conform's
+// reference for big worlds, slows down by orders of magnitude at those scales (over 600 s for 10^5 circles near
+// 2^-1060, 2 to 4 s for 4096 swarm circles near 2^-1030 here), so the swarm keeps them to sizes it steps in a
+// fraction of a second.
+inline constexpr std::size_t kExtremeCircles = 1024;
+
 }  // namespace circles::properties::detail
