@@ -40,7 +40,7 @@ void Ladder::took(std::size_t size, double seconds) {
     seconds_.push_back(seconds);
     ++climbed_;
   } else if (k < climbed_) {
-    seconds_[k] = seconds;
+    seconds_[k] = std::max(seconds_[k], seconds);
   }
 }
 
