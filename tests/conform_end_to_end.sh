@@ -174,12 +174,12 @@ exits_2_for_a_count_beyond_2_63_or_threads_with_a_program)
     fail "unexpected message: $(cat "$dir/err")"
   ;;
 gives_a_slow_program_the_time_its_speed_needs_and_stops_one_that_hangs)
-  # tests/slow_candidate.py answers right after 5 ms a circle: its worlds of 100 or more circles take longer than
-  # the 0.5 s floor, and the deadlines its earlier answers predict give them that time. The same program hanging
-  # after 10 answers is stopped.
-  slow="python3 $source_dir/tests/slow_candidate.py $circles 0.005"
-  run_conform 0 --cases 25 --seed 1 --timeout 0.5 --jobs 1 --exec "$slow"
-  run_conform 1 --cases 25 --seed 1 --timeout 0.5 --jobs 1 --exec "$slow 10"
+  # tests/slow_candidate.py answers right after 10 ms a circle: its worlds of 100 or more circles (index-bits has
+  # 272 to 320) take longer than the 1 s floor, and the deadlines its earlier answers predict give them that time.
+  # The same program hanging after 10 answers is stopped.
+  slow="python3 $source_dir/tests/slow_candidate.py $circles 0.01"
+  run_conform 0 --cases 25 --seed 1 --timeout 1 --jobs 1 --exec "$slow"
+  run_conform 1 --cases 25 --seed 1 --timeout 1 --jobs 1 --exec "$slow 10"
   grep -q "^  step 1 of 1: no answer: the program hung$" "$dir/out" || fail "$(cat "$dir/out" "$dir/err")"
   grep -q "gave no answer to request 11 within " "$dir/out" || fail "$(cat "$dir/out" "$dir/err")"
   ;;
