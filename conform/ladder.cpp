@@ -28,8 +28,14 @@ std::optional<std::size_t> Ladder::next(double seconds_left) {
     if (kMargin * *predicted(climbed_) <= seconds_left) return rungs_[climbed_];
     stopped_ = true;
   }
-  for (std::size_t k = climbed_; k-- > 0;)
-    if (kMargin * seconds_[k] <= seconds_left) return rungs_[k];
+  // The rungs climbed in turn, from the smallest: the small ones cost little next to the top, and the swarm
+  // keeps its extreme frames to small worlds.
+  for (std::size_t t = 0; t < climbed_; ++t) {
+    const std::size_t k = (cycle_ + t) % climbed_;
+    if (kMargin * seconds_[k] > seconds_left) continue;
+    cycle_ = k + 1;
+    return rungs_[k];
+  }
   return std::nullopt;
 }
 

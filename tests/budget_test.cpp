@@ -44,12 +44,11 @@ TEST(ladder, doubles_from_512_up_to_the_top) {
   EXPECT_EQ(Ladder(320).rungs(), (std::vector<std::size_t>{320}));
 }
 
-TEST(ladder, climbs_a_linear_program_to_the_top_and_then_repeats_the_top) {
-  // 1 µs a circle: 10^6 circles take 1 s, so a budget of 20 s climbs every rung and repeats the top.
+TEST(ladder, climbs_a_linear_program_to_the_top_and_then_goes_through_the_rungs_again) {
+  // 1 µs a circle: 10^6 circles take 1 s, so a budget of 20 s climbs every rung, then asks them again in turn.
   const auto asked = climb(1'000'000, 20, [](std::size_t n) { return 1e-6 * static_cast<double>(n); });
-  ASSERT_GE(asked.size(), 13u);
-  for (std::size_t k = 0; k < 12; ++k) EXPECT_EQ(asked[k], Ladder(1'000'000).rungs()[k]);
-  EXPECT_EQ(asked[12], 1'000'000u);
+  ASSERT_GE(asked.size(), 24u);
+  for (std::size_t k = 0; k < 24; ++k) EXPECT_EQ(asked[k], Ladder(1'000'000).rungs()[k % 12]) << k;
 }
 
 TEST(ladder, stops_a_quadratic_program_where_the_next_rung_would_pass_the_budget) {

@@ -43,8 +43,11 @@ exits_2_for_a_program_that_hangs)
   run_conform 2 --cases 5 --timeout 0.2 --exec 'sleep 30'
   ;;
 rejects_a_gallery_entry_with_exit_1)
-  # ARGS: GALLERY_CANDIDATE ENTRY. Default options (a random seed, printed in the report).
-  run_conform 1 --exec "$1 $2"
+  # ARGS: GALLERY_CANDIDATE ENTRY [OPTIONS...]. Default options (a random seed, printed in the report) but OPTIONS.
+  gallery=$1
+  entry=$2
+  shift 2
+  run_conform 1 --exec "$gallery $entry" "$@"
   ;;
 gallery_candidate_exits_2_listing_the_entries_for_an_unknown_name)
   # ARGS: GALLERY_CANDIDATE.
