@@ -263,8 +263,8 @@ const std::vector<ScaleEntry>& swarm_gallery() {
       {"same-centre-skip", "takes a circle at the same centre for the circle itself", {.skip_same_centre = true}, 65},
       {"position-order", "orders contacts by position alone, not velocity and radius", {.position_order = true}, 65},
       {"flush-subnormal", "writes a next position below DBL_MIN as 0", {.flush_subnormal = true}, 65},
-      {"index-halves", "above 20000 circles, two threads by index never merged", {.index_halves = 20000}, 20001},
-      {"space-halves", "above 32768 circles, two threads by y never merged", {.space_halves = 32768}, 32769},
+      {"index-halves", "above 5000 circles, two threads by index never merged", {.index_halves = 5000}, 5001},
+      {"space-halves", "above 8000 circles, two threads by y never merged", {.space_halves = 8000}, 8001},
   };
   return entries;
 }
