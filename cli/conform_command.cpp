@@ -19,6 +19,7 @@
 #include <random>
 #include <span>
 #include <stdexcept>
+#include <thread>
 #include <tuple>
 
 namespace circles::cli {
@@ -34,7 +35,19 @@ conform::Options check_options(const ConformCommandOptions& given) {
   options.seed = given.seed;
   options.steps = given.steps;
   options.keep_going = given.keep_going;
-  options.max_circles = given.max_circles;
+  // A fixed schedule (--cases, --shard, --case), or the time budget's.
+  const bool fixed = given.cases_given || given.shard_given || given.case_given;
+  if (given.budget_given && fixed)
+    throw std::invalid_argument("--budget sets the time of a run without a fixed schedule; --cases, --shard and --case "
+                                "fix the cases instead");
+  if (!fixed) options.budget = given.budget;
+  options.max_circles = given.max_circles_given ? given.max_circles
+                        : fixed                 ? properties::kDefaultMaxCircles
+                                                : conform::kBudgetMaxCircles;
+  options.jobs = given.jobs > 0 ? given.jobs : std::max(1u, std::thread::hardware_concurrency());
+  if (given.circles_given && !given.case_given)
+    throw std::invalid_argument("--circles gives the size of the ladder's world that --case replays: give it with --case");
+  if (given.circles_given) options.circles = given.circles;
   options.level = properties::parse_level(given.level);
   options.profile = properties::parse_profile(given.profile);
   std::tie(options.shard, options.shards) = conform::parse_shard(given.shard);
@@ -53,12 +66,19 @@ conform::Options check_options(const ConformCommandOptions& given) {
 Verdict verdict_of(const ConformCommandOptions& given, const conform::Options& options) {
   try {
     std::unique_ptr<conform::Candidate> candidate;
-    if (given.exec.empty())
+    std::shared_ptr<conform::RequestLog> log;
+    if (given.exec.empty()) {
       candidate = std::make_unique<conform::EngineCandidate>(engines::engine(given.engine), given.threads);
-    else
-      candidate = std::make_unique<conform::ProcessCandidate>(
+    } else {
+      if (!given.log.empty()) log = std::make_shared<conform::RequestLog>(given.log);
+      auto program = std::make_unique<conform::ProcessCandidate>(
           given.exec, std::chrono::milliseconds(static_cast<long long>(std::ceil(given.timeout * 1000))));
-    return conform::check(*candidate, options);
+      program->log_to(log);
+      candidate = std::move(program);
+    }
+    Verdict verdict = conform::check(*candidate, options);
+    if (log) log->commit();
+    return verdict;
   } catch (const conform::BrokenCandidate& e) {
     return conform::unchecked("the program `" + given.exec + "`", options, e.what());
   }
@@ -81,19 +101,26 @@ std::uint64_t cases_to_check(const conform::Options& o) {
 }
 
 // The progress line of a run on a terminal, once it has taken 2 s: "[####......]  20%  case 200 of 1000  2
-// families failing  8.0 s left".
+// families failing  8.0 s left"; of a budget run, by its seconds: "[####......]  20%  second 12 of 60  3400
+// cases, big worlds up to 8192 circles  48.0 s left".
 class ConformProgress {
  public:
   ConformProgress(std::ostream* out, conform::Options& options)
-      : progress_(out, cases_to_check(options), 1, pictures::Progress::Clock::now(), {kAfter, kAfter, kAfter},
-                  [this](unsigned, std::uint64_t done, double left) { return line(done, left); }),
-        total_(cases_to_check(options)) {
+      : total_(options.budget && !options.only_case ? static_cast<std::uint64_t>(std::ceil(*options.budget))
+                                                    : cases_to_check(options)),
+        budget_(options.budget && !options.only_case),
+        progress_(out, total_, 1, pictures::Progress::Clock::now(), {kAfter, kAfter, kAfter},
+                  [this](unsigned, std::uint64_t done, double left) { return line(done, left); }) {
     if (out)
       options.progress = [this](const Verdict& v) {
         failing_ = static_cast<std::uint64_t>(std::count_if(v.families.begin(), v.families.end(), [](const auto& f) {
           return f.status == conform::FamilyStatus::failed;
         }));
-        progress_.update(0, v.cases, pictures::Progress::Clock::now());
+        cases_ = v.cases;
+        largest_ = v.largest_world;
+        const auto now = pictures::Progress::Clock::now();
+        progress_.update(0, budget_ ? static_cast<std::uint64_t>(std::chrono::duration<double>(now - start_).count()) : v.cases,
+                         now);
       };
   }
   // Erases the line, before the verdict is printed.
@@ -102,12 +129,17 @@ class ConformProgress {
  private:
   static constexpr std::chrono::milliseconds kAfter{2000};
   std::string line(std::uint64_t done, double left) const {
-    const std::string note = failing_ == 0 ? "" : "  " + std::to_string(failing_) + (failing_ == 1 ? " family" : " families") + " failing";
-    return pictures::progress_line(0, 1, done, total_, left, "case", note);
+    std::string note = failing_ == 0 ? "" : "  " + std::to_string(failing_) + (failing_ == 1 ? " family" : " families") + " failing";
+    if (budget_) note = "  " + std::to_string(cases_) + " cases" +
+                        (largest_ ? ", big worlds up to " + std::to_string(largest_) + " circles" : "") + note;
+    return pictures::progress_line(0, 1, done, total_, left, budget_ ? "second" : "case", note);
   }
-  pictures::Progress progress_;
   std::uint64_t total_;
-  std::uint64_t failing_ = 0;
+  bool budget_;
+  pictures::Progress progress_;
+  pictures::Progress::Clock::time_point start_ = pictures::Progress::Clock::now();
+  std::uint64_t failing_ = 0, cases_ = 0;
+  std::size_t largest_ = 0;
 };
 
 }  // namespace
@@ -129,8 +161,22 @@ CLI::App* add_conform_command(CLI::App& app, ConformCommandOptions& options) {
         "LEVEL", "exact, faithful or ulps:K");
   // --cases and --case up to 2^63 - 1, as the counts of run and vectors.
   constexpr std::uint64_t kMaxCases = std::numeric_limits<std::int64_t>::max();
-  takes_whole_number(conform->add_option("--cases", options.cases, "Worlds to check")->capture_default_str(), "N", 0,
-                     kMaxCases);
+  takes_whole_number(conform->add_option("--cases", options.cases,
+                                         "Worlds to check, a fixed schedule (default: as many as --budget allows)"),
+                     "N", 0, kMaxCases);
+  takes_number(conform
+                   ->add_option("--budget", options.budget,
+                                "Seconds to spend: the small families first, then big worlds of ever more circles as "
+                                "far as the program's speed allows (conform.md in the docs, The time budget)")
+                   ->capture_default_str(),
+               "SECONDS", "a number from 0 to 10^6", [](double x) { return x >= 0 && x <= 1e6; });
+  takes_whole_number(conform->add_option("--jobs", options.jobs,
+                                         "Copies of the program run at once, each answering its own cases (default: "
+                                         "one per core); the verdict is the same for every count"),
+                     "N", 1, 1024);
+  takes_whole_number(conform->add_option("--circles", options.circles,
+                                         "With --case: replay a budget run's big world of this many circles"),
+                     "N", circles::properties::kMinMaxCircles, std::size_t{1} << 31);
   takes_whole_number(conform->add_option("--seed", options.seed, "Seed of the worlds (default: a random one, printed)"),
                      "N", 0, std::numeric_limits<std::uint64_t>::max());
   takes_whole_number(
@@ -161,14 +207,16 @@ CLI::App* add_conform_command(CLI::App& app, ConformCommandOptions& options) {
                "SECONDS", "a number from 0.001 to 3600", [](double x) { return x >= 0.001 && x <= 3600; });
   takes_whole_number(conform
                          ->add_option("--max-circles", options.max_circles,
-                                      "The most circles of a big world (conform.md in the docs, Big worlds): 4097 "
-                                      "crosses every power of two up to 4096; fast programs go to 100000 or more")
-                         ->capture_default_str(),
+                                      "The most circles of a big world (conform.md in the docs, Big worlds): "
+                                      "default 1000000 with --budget, 4097 with --cases, which crosses every power of "
+                                      "two up to 4096"),
                      "N", circles::properties::kMinMaxCircles, std::size_t{1} << 31);
   takes_whole_number(conform->add_option("--case", options.only_case, "Check only this case (to replay a counterexample)"),
                      "N", 0, kMaxCases);
   takes_output_file(conform->add_option(
       "--report", options.report, "Also write the verdict as JSON to FILE (conform.md in the docs, Reports for CI)"));
+  takes_output_file(conform->add_option(
+      "--log", options.log, "Write every request line sent to the program and every answer line read to FILE"));
   takes_output_file(
       conform->add_option("--junit", options.junit, "Also write the verdict as JUnit XML to FILE, a test case per family"));
   conform->add_flag("--keep-going", options.keep_going,
@@ -197,6 +245,11 @@ void note_given(const CLI::App& conform, ConformCommandOptions& options) {
   options.engine_given = conform.count("--engine") > 0;
   options.threads_given = conform.count("--threads") > 0;
   options.case_given = conform.count("--case") > 0;
+  options.cases_given = conform.count("--cases") > 0;
+  options.shard_given = conform.count("--shard") > 0;
+  options.budget_given = conform.count("--budget") > 0;
+  options.max_circles_given = conform.count("--max-circles") > 0;
+  options.circles_given = conform.count("--circles") > 0;
   options.families_given = conform.count("--families") > 0;
   options.skip_families_given = conform.count("--skip-families") > 0;
 }
@@ -211,6 +264,11 @@ int conform_command(const ConformCommandOptions& given, std::ostream& out, std::
   }
   if (!given.exec.empty() && given.engine_given) {
     err << "circles conform: --engine and --exec exclude each other: check one candidate at a time\n";
+    return 2;
+  }
+  if (given.exec.empty() && !given.log.empty()) {
+    err << "circles conform: --log writes the lines a program given with --exec reads and writes; an --engine "
+           "runs in process\n";
     return 2;
   }
   if (!given.exec.empty() && given.threads_given) {
@@ -246,6 +304,10 @@ int conform_command(const ConformCommandOptions& given, std::ostream& out, std::
     err << "circles conform: " << e.what() << "\n";
     return 2;
   } catch (const engines::UnknownEngine& e) {  // the program's --engine refuses it while parsing
+    progress.finish();
+    err << "circles conform: " << e.what() << "\n";
+    return 2;
+  } catch (const formats::OutputError& e) {  // --log
     progress.finish();
     err << "circles conform: " << e.what() << "\n";
     return 2;

@@ -6,6 +6,7 @@
 // applied, the verdict printed (cli/conform_report.hpp) and the reports for CI written (cli/report.hpp).
 #pragma once
 
+#include "conform/conform.hpp"
 #include "properties/boundaries.hpp"
 
 #include <CLI/CLI.hpp>
@@ -26,11 +27,21 @@ struct ConformCommandOptions {
   bool threads_given = false;
   std::string exec;               // --exec COMMAND: check this program instead of an engine ("" for none)
   double timeout = 10;            // --timeout: seconds to wait for each answer of the program
-  std::size_t max_circles = properties::kDefaultMaxCircles;  // --max-circles: the most circles of a big world
+  // --max-circles: the most circles of a big world, when max_circles_given (else the fixed schedule's
+  // properties::kDefaultMaxCircles, or a budget run's conform::kBudgetMaxCircles)
+  std::size_t max_circles = properties::kDefaultMaxCircles;
+  bool max_circles_given = false;
+  double budget = conform::kDefaultBudget;             // --budget SECONDS of a run with no fixed schedule (no --cases, --shard or --case)
+  bool budget_given = false;
+  unsigned jobs = 0;              // --jobs N copies of the program at once (0: one per core)
+  std::size_t circles = 0;        // --circles N: the ladder size of the case --case replays, when circles_given
+  bool circles_given = false;
   std::string level = "exact";    // --level: exact, faithful or ulps:K (properties::parse_level)
   std::string profile = "resolved";  // --profile: resolved or literal
   std::string shard = "0/1";      // --shard i/n
-  std::uint64_t cases = 1000;     // --cases
+  bool shard_given = false;
+  std::uint64_t cases = 1000;     // --cases, when cases_given (else the budget decides)
+  bool cases_given = false;
   std::uint64_t seed = 1;         // --seed (the program draws a random one when it is not given)
   std::uint64_t steps = 1;        // --steps chained per case
   std::uint64_t only_case = 0;    // --case I, when case_given
@@ -44,6 +55,7 @@ struct ConformCommandOptions {
   std::string svg;                // --svg FILE ("" for none)
   std::string report;             // --report FILE.json ("" for none)
   std::string junit;              // --junit FILE.xml ("" for none)
+  std::string log;                // --log FILE: every request and answer line of the program ("" for none)
   std::string expect;             // --expect FILE ("" for none); implies keep_going
   std::string write_expect;       // --write-expect FILE ("" for none); implies keep_going
   std::ostream* progress = nullptr;  // where a run longer than 2 s draws its progress line (a terminal), or none

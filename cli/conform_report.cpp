@@ -4,10 +4,13 @@
 #include "conform/report.hpp"  // difference_line
 #include "formats/json_number.hpp"
 #include "formats/output_file.hpp"
+#include "impl/predicate.hpp"
 #include "pictures/counterexample_svg.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <map>
+#include <optional>
 #include <span>
 #include <sstream>
 #include <string>
@@ -25,9 +28,14 @@ using properties::Profile;
 namespace json_number = formats::json_number;
 
 // "  TITLE:", then a line "    #k [px, py, vx, vy, r]" per circle, each after `indent`.
-void print_world(std::ostream& out, const std::string& title, const Circles& w, const std::string& indent = "") {
-  out << indent << "  " << title << ":\n";
+void print_world(std::ostream& out, const std::string& title, const Circles& w, const std::string& indent = "",
+                 const std::vector<std::size_t>* only = nullptr) {
+  out << indent << "  " << title << (only ? " (" + std::to_string(only->size()) + " of its " + std::to_string(w.size()) +
+                                                " circles: those that decide it; --report's JSON holds them all)"
+                                          : std::string())
+      << ":\n";
   for (std::size_t k = 0; k < w.size(); ++k) {
+    if (only && !std::binary_search(only->begin(), only->end(), k)) continue;
     std::string line = indent + "    #" + std::to_string(k) + " [";
     for (std::size_t f = 0; f < 5; ++f) {
       if (f) line += ", ";
@@ -69,21 +77,40 @@ std::string asked_title(const Counterexample& c) {
 }
 
 // The head lines and the three worlds.
+// The circles of a world too big to print whole (more than kPrintWhole) that decide its difference: the circle
+// that differs and every circle that touches it (impl::intersect_exact); for a fault, which no circle decides,
+// the first kPrintWhole.
+constexpr std::size_t kPrintWhole = 64;
+std::optional<std::vector<std::size_t>> deciding(const Counterexample& c) {
+  if (c.input.size() <= kPrintWhole) return std::nullopt;
+  std::vector<std::size_t> out;
+  const std::size_t i = c.difference.circle;
+  for (std::size_t j = 0; j < c.input.size(); ++j)
+    if (c.fault.empty() ? j == i || impl::intersect_exact(c.input[i][0], c.input[i][1], c.input[i][4], c.input[j][0],
+                                                          c.input[j][1], c.input[j][4])
+                        : j < kPrintWhole)
+      out.push_back(j);
+  return out;
+}
+
 void print_worlds(const Verdict& v, std::ostream& out) {
   const Counterexample& c = *v.counterexample;
   for (const std::string& line : head_lines(v)) out << line << "\n";
-  print_world(out, asked_title(c), c.input);
+  const auto only = deciding(c);
+  const std::vector<std::size_t>* some = only ? &*only : nullptr;
+  print_world(out, asked_title(c), c.input, "", some);
   print_world(out,
               v.options.profile == Profile::literal ? "expected (the literal oracle's step, rounded to nearest)"
                                                     : "expected (the correctly rounded oracle step)",
-              c.expected);
-  print_world(out, "answered", c.actual);
+              c.expected, "", some);
+  if (c.fault.empty()) print_world(out, "answered", c.actual, "", some);
 }
 
 // Draws the picture of the run's counterexample where picture_path says, if anywhere, and says where.
 void draw_picture(const Verdict& v, const std::filesystem::path& svg, std::ostream& out) {
   const Counterexample& c = *v.counterexample;
   const properties::Difference& d = c.difference;
+  if (!c.fault.empty()) return;  // no answer to draw
   if (const std::filesystem::path file = picture_path(v, svg); !file.empty()) {
     try {
       formats::write_file(file.string(), file.string(),
@@ -118,6 +145,18 @@ void print_families(std::ostream& out, std::span<const conform::FamilyResult> fa
     line += item;
   }
   out << line << "\n";
+}
+
+// How far a budget run went: "big worlds up to 262,144 circles, 57 s of 60".
+std::string how_far(const Verdict& v) {
+  const auto grouped = [](std::uint64_t n) {
+    std::string digits = std::to_string(n);
+    for (std::size_t at = digits.size(); at > 3; at -= 3) digits.insert(at - 3, ",");
+    return digits;
+  };
+  char seconds[64];
+  std::snprintf(seconds, sizeof seconds, "%.0f s of %g", v.elapsed.count(), *v.options.budget);
+  return (v.largest_world ? "big worlds up to " + grouped(v.largest_world) + " circles, " : std::string()) + seconds;
 }
 
 // The first line of a run's verdict without a counterexample, or of its --keep-going table: "circles conform:
@@ -156,6 +195,7 @@ std::string summary_line(const Verdict& v) {
   line += ", level " + o.level.text() + ", seed " + std::to_string(o.seed) + ", " + properties::name(o.profile) +
           " profile";
   if (o.shards > 1) line += ", shard " + std::to_string(o.shard) + "/" + std::to_string(o.shards);
+  if (o.budget && !o.only_case) line += "; " + how_far(v);
   return line;
 }
 

@@ -3,12 +3,14 @@
 #include "conform/interrupt.hpp"
 #include "conform/replay.hpp"
 #include "formats/json_number.hpp"
+#include "formats/output_file.hpp"
 
 #include <algorithm>
 #include <cerrno>
 #include <csignal>
 #include <cstring>
 #include <limits>
+#include <mutex>
 #include <string_view>
 #include <thread>
 
@@ -32,6 +34,49 @@ Circles EngineCandidate::answer(const Circles& world, std::uint64_t id) {
   }
 }
 
+const char* name(Fault fault) {
+  switch (fault) {
+    case Fault::exited: return "crashed or exited";
+    case Fault::hung: return "hung";
+    case Fault::malformed: return "wrote a malformed answer";
+    case Fault::other: break;
+  }
+  return "";
+}
+
+struct RequestLog::File {
+  std::mutex mutex;
+  formats::OutputFile out;
+  explicit File(const std::string& path) : out(path, "--log " + path) {}
+};
+
+RequestLog::RequestLog(std::string path) : file_(std::make_unique<File>(path)) {}
+RequestLog::~RequestLog() = default;
+
+void RequestLog::write(unsigned copy, char direction, std::string_view text) {
+  std::string lines;
+  const std::string prefix = std::to_string(copy) + direction + ' ';
+  for (std::size_t at = 0; at < text.size();) {
+    const std::size_t end = std::min(text.find('\n', at), text.size());
+    lines.append(prefix).append(text.substr(at, end - at)).push_back('\n');
+    at = end + 1;
+  }
+  const std::lock_guard lock(file_->mutex);
+  file_->out.write(lines);
+}
+
+void RequestLog::commit() {
+  const std::lock_guard lock(file_->mutex);
+  file_->out.commit();
+}
+
+std::unique_ptr<Candidate> ProcessCandidate::copy() const {
+  auto copy = std::make_unique<ProcessCandidate>(command_, deadline_, deadlines_);
+  copy->log_ = log_;
+  copy->copy_ = copy_ + ++copies_made_;
+  return copy;
+}
+
 std::string EngineCandidate::name() const { return "the " + std::string(engine_.name) + " engine"; }
 std::string EngineCandidate::option() const { return "--engine " + std::string(engine_.name); }
 std::string ProcessCandidate::option() const { return "--exec " + shell_quoted(command_); }
@@ -50,8 +95,11 @@ std::string seconds(std::chrono::milliseconds deadline) {
 
 }  // namespace
 
-ProcessCandidate::ProcessCandidate(std::string command, std::chrono::milliseconds deadline)
-    : command_(std::move(command)), deadline_(deadline) {
+ProcessCandidate::ProcessCandidate(std::string command, std::chrono::milliseconds deadline,
+                                   std::shared_ptr<Deadlines> deadlines)
+    : command_(std::move(command)),
+      deadline_(deadline),
+      deadlines_(deadlines ? std::move(deadlines) : std::make_shared<Deadlines>(deadline)) {
   std::signal(SIGPIPE, SIG_IGN);
   start();
 }
@@ -166,7 +214,8 @@ std::string ProcessCandidate::read_line(std::uint64_t id, std::chrono::milliseco
       kill_group();
       throw BrokenCandidate(name() + " wrote a malformed answer to request " + std::to_string(id) +
                             ": the line is longer than " + std::to_string(longest) +
-                            " bytes, more than any answer to its world needs (docs/protocol.md, Limits)");
+                            " bytes, more than any answer to its world needs (docs/protocol.md, Limits)",
+                            Fault::malformed);
     }
     if (newline != std::string::npos) {
       std::string line = buffer_.substr(0, newline);
@@ -178,7 +227,8 @@ std::string ProcessCandidate::read_line(std::uint64_t id, std::chrono::milliseco
     if (left.count() <= 0) {
       kill_group();
       throw BrokenCandidate(name() + " gave no answer to request " + std::to_string(id) + " within " +
-                            seconds(deadline) + " (it was stopped)");
+                            seconds(deadline) + " (it was stopped)",
+                            Fault::hung);
     }
     pollfd ready{from_child_, POLLIN, 0};
     const int polled = poll(&ready, 1, static_cast<int>(std::min<long long>(left.count(), 1000)));
@@ -192,7 +242,8 @@ std::string ProcessCandidate::read_line(std::uint64_t id, std::chrono::milliseco
       throw_if_interrupted();  // the end of a program that interrupt() killed is not its fault
       const std::string status = exit_status(true);
       throw BrokenCandidate(name() + " " + status + " before answering request " + std::to_string(id) +
-                            (buffer_.empty() ? "" : " (it wrote a line without a newline: \"" + buffer_.substr(0, 80) + "\")"));
+                            (buffer_.empty() ? "" : " (it wrote a line without a newline: \"" + buffer_.substr(0, 80) + "\")"),
+                            Fault::exited);
     }
     scanned = buffer_.size();
     buffer_.append(chunk, static_cast<std::size_t>(got));
@@ -217,18 +268,13 @@ void ProcessCandidate::write_requests(std::string_view lines, std::span<const st
       std::string status;
       while ((status = exit_status(false)).empty() && std::chrono::steady_clock::now() < give_up)
         std::this_thread::sleep_for(std::chrono::milliseconds(5));
-      if (status.empty()) throw BrokenCandidate(name() + " closed its input at request " + std::to_string(id));
-      throw BrokenCandidate(name() + " " + status + " before answering request " + std::to_string(id));
+      if (status.empty()) throw BrokenCandidate(name() + " closed its input at request " + std::to_string(id),
+                            Fault::exited);
+      throw BrokenCandidate(name() + " " + status + " before answering request " + std::to_string(id),
+                            Fault::exited);
     }
     lines.remove_prefix(static_cast<std::size_t>(wrote));
   }
-}
-
-std::chrono::milliseconds ProcessCandidate::deadline_for(std::chrono::milliseconds deadline, std::size_t circles) {
-  if (circles <= kDeadlineCircles) return deadline;
-  const double scale = static_cast<double>(circles) / kDeadlineCircles;
-  const double ms = static_cast<double>(deadline.count()) * scale * scale;
-  return std::chrono::milliseconds(ms < 1e15 ? static_cast<std::int64_t>(ms) : std::int64_t{1'000'000'000'000'000});
 }
 
 std::size_t ProcessCandidate::longest_answer(std::size_t circles) {
@@ -237,7 +283,11 @@ std::size_t ProcessCandidate::longest_answer(std::size_t circles) {
 }
 
 Circles ProcessCandidate::read_answer(const Circles& world, std::uint64_t id) {
-  std::string text = read_line(id, deadline_for(deadline_, world.size()), longest_answer(world.size()));
+  std::string text = read_line(id, deadlines_->for_world(world.size()), longest_answer(world.size()));
+  if (log_) log_->write(copy_, '<', text);
+  const auto now = std::chrono::steady_clock::now();
+  deadlines_->answered(world.size(), now - asked_);
+  asked_ = now;
   ++lines_;
   Line line;
   try {
@@ -246,13 +296,16 @@ Circles ProcessCandidate::read_answer(const Circles& world, std::uint64_t id) {
     if (auto plain = plain_.read(text, kId)) line = std::move(*plain);
     else line = parse_line(text, lines_, kId, Reading::answer);
   } catch (const ProtocolError& e) {
-    throw BrokenCandidate(name() + " wrote a malformed answer to request " + std::to_string(id) + ": " + e.what());
+    throw BrokenCandidate(name() + " wrote a malformed answer to request " + std::to_string(id) + ": " + e.what(),
+                            Fault::malformed);
   }
   if (line.number != id)
-    throw BrokenCandidate(name() + " answered request " + std::to_string(id) + " with id " + std::to_string(line.number));
+    throw BrokenCandidate(name() + " answered request " + std::to_string(id) + " with id " + std::to_string(line.number),
+                            Fault::malformed);
   if (line.circles.size() != world.size())
     throw BrokenCandidate(name() + " answered request " + std::to_string(id) + " (" + std::to_string(world.size()) +
-                          " circles) with " + std::to_string(line.circles.size()) + " circles");
+                          " circles) with " + std::to_string(line.circles.size()) + " circles",
+                            Fault::malformed);
   return std::move(line.circles);
 }
 
@@ -308,6 +361,8 @@ void ProcessCandidate::answer_batches(std::span<const Circles> worlds, std::uint
       ends.push_back(lines.size());
     }
     unanswered_ += last - first;
+    if (log_) log_->write(copy_, '>', std::string_view(lines).substr(0, lines.size() - 1));
+    asked_ = std::chrono::steady_clock::now();
     write_requests(lines, ends, first_id + first);
     for (; first < last; ++first) {
       answers.push_back(read_answer(worlds[first], first_id + first));

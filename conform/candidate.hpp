@@ -11,12 +11,14 @@
 //                     afresh, so that no answer it wrote to an earlier request is read as another's.
 #pragma once
 
+#include "conform/deadline.hpp"
 #include "engines/registry.hpp"
 #include "formats/plain_line.hpp"
 #include "formats/protocol.hpp"
 
 #include <chrono>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <stdexcept>
@@ -36,11 +38,43 @@ using formats::parse_line;
 using formats::format_line;
 using formats::kId;
 
-// The candidate cannot be checked: it crashed, exited, hung past its deadline, wrote a malformed line, a wrong
-// id or a wrong number of circles. what() says which, for which request.
+// What a candidate did instead of answering a request: it exited or was killed (exited), gave no answer within
+// its deadline (hung), or wrote a malformed line, a wrong id or a wrong number of circles (malformed); or
+// something that no world explains (other: a pipe that cannot be made, a program that cannot start).
+enum class Fault { other, exited, hung, malformed };
+// "crashed or exited", "hung", "wrote a malformed answer", "" for other.
+const char* name(Fault fault);
+
+// The candidate broke instead of answering: what() says how, for which request; fault() is its kind. conform
+// reports a fault on a world as a counterexample (conform/conform.hpp), and one before the program's first
+// answer, or of kind other, as a candidate it cannot check.
 class BrokenCandidate : public std::runtime_error {
  public:
-  using std::runtime_error::runtime_error;
+  explicit BrokenCandidate(const std::string& what, Fault fault = Fault::other)
+      : std::runtime_error(what), fault_(fault) {}
+  Fault fault() const noexcept { return fault_; }
+
+ private:
+  Fault fault_;
+};
+
+// Where `circles conform --log FILE` writes every request line sent and every answer line read, as they go, each
+// prefixed by the copy of the program (--jobs) that it went to or came from: "1> " for a request to copy 1,
+// "1< " for an answer from it. Shared by the copies.
+class RequestLog {
+ public:
+  explicit RequestLog(std::string path);
+  ~RequestLog();
+  RequestLog(const RequestLog&) = delete;
+  RequestLog& operator=(const RequestLog&) = delete;
+  // The lines of `text`, each prefixed. Throws formats::OutputError.
+  void write(unsigned copy, char direction, std::string_view text);
+  // Closes the file, in place or renamed over its path. Throws formats::OutputError.
+  void commit();
+
+ private:
+  struct File;
+  std::unique_ptr<File> file_;
 };
 
 // What Candidate::answer_all read: the answers to its first answers.size() requests, in order, and, when that is
@@ -68,6 +102,9 @@ class Candidate {
   virtual void finish() {}
   // "the double engine", "the program `python3 step.py`": for messages.
   virtual std::string name() const = 0;
+  // Another candidate like this one, to ask other cases at the same time (--jobs); none for one that cannot be
+  // copied, which then answers every case itself. Throws BrokenCandidate.
+  virtual std::unique_ptr<Candidate> copy() const { return nullptr; }
   // The option of `circles conform` that selects this candidate, quoted for sh: "--engine double", "--exec
   // 'python3 step.py'"; "" for one that no command line selects (a function in a test). Replay lines start
   // with it (conform/replay.hpp).
@@ -81,6 +118,7 @@ class EngineCandidate : public Candidate {
   Circles answer(const Circles& world, std::uint64_t id) override;
   std::string name() const override;
   std::string option() const override;
+  std::unique_ptr<Candidate> copy() const override { return std::make_unique<EngineCandidate>(engine_, threads_); }
 
  private:
   const engines::EngineEntry& engine_;
@@ -91,7 +129,10 @@ class ProcessCandidate : public Candidate {
  public:
   // Starts the program. Throws BrokenCandidate if it cannot be started. Ignores SIGPIPE in this process from
   // then on (a write to a candidate that exited must be an error to report, not a signal that kills us).
-  ProcessCandidate(std::string command, std::chrono::milliseconds deadline);
+  // `deadline` is the floor of each answer's deadline, which grows with the program's measured speed
+  // (conform/deadline.hpp); copies share that measure.
+  ProcessCandidate(std::string command, std::chrono::milliseconds deadline,
+                   std::shared_ptr<Deadlines> deadlines = nullptr);
   ~ProcessCandidate() override;
   ProcessCandidate(const ProcessCandidate&) = delete;
   ProcessCandidate& operator=(const ProcessCandidate&) = delete;
@@ -105,13 +146,10 @@ class ProcessCandidate : public Candidate {
   // Closes the program's stdin and waits, up to the deadline, for it to exit 0.
   void finish() override;
   std::string name() const override { return "the program `" + command_ + "`"; }
+  std::unique_ptr<Candidate> copy() const override;
+  // Writes every request and answer line to `log` from now on.
+  void log_to(std::shared_ptr<RequestLog> log) { log_ = std::move(log); }
   std::string option() const override;
-
-  // The deadline for the answer to a world of `circles` circles: `deadline` up to kDeadlineCircles circles,
-  // and above it `deadline` · (circles / kDeadlineCircles)², as an O(n²) step's time grows: 16 times as long at
-  // 2048 circles, 64 times at 4097 (so 10 s becomes 640 s, time for a step in rationals that tests every pair).
-  static std::chrono::milliseconds deadline_for(std::chrono::milliseconds deadline, std::size_t circles);
-  static constexpr std::size_t kDeadlineCircles = 512;
 
   // The most bytes of request lines written before their answers are read. Why a bound, and why this one: we
   // write a whole batch before reading any answer, while the candidate may answer each line as it reads it, so
@@ -161,6 +199,12 @@ class ProcessCandidate : public Candidate {
 
   std::string command_;
   std::chrono::milliseconds deadline_;
+  std::shared_ptr<Deadlines> deadlines_;
+  std::shared_ptr<RequestLog> log_;
+  unsigned copy_ = 1;  // which copy of the program this is, from 1, for the log
+  mutable unsigned copies_made_ = 0;
+  std::chrono::steady_clock::time_point asked_{};  // when the answer being read was asked for: its request's
+                                                   // write, or the previous answer in a batch
   pid_t pid_ = -1;
   int to_child_ = -1, from_child_ = -1;
   std::string buffer_;

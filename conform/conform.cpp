@@ -1,6 +1,8 @@
 #include "conform/conform.hpp"
 
+#include "conform/checker.hpp"
 #include "conform/corpus.hpp"
+#include "conform/ladder.hpp"
 #include "conform/replay.hpp"
 #include "formats/json_number.hpp"
 #include "properties/boundaries.hpp"
@@ -27,6 +29,11 @@ using properties::NoAnswer;
 // a world of 10^5 circles down to a dozen (about k log2(n/k) + k queries for k circles, then one per circle
 // left to show that none can go), bounded for a slow program.
 constexpr int kMaxShrinkQueries = 2000;
+// Shrinking a hang asks at most this many worlds, each of which may cost the program's whole deadline.
+constexpr int kMaxHangShrinkQueries = 8;
+// Shrinking one counterexample stops after this long, whatever its budget of queries: a program that crashes is
+// started afresh for each world asked, and a slow one takes its time on each.
+constexpr std::chrono::seconds kMaxShrinkTime{60};
 // The most circles of a small family's world (properties/boundaries.hpp): bigger worlds shrink by delta
 // debugging over their circles before anything else.
 constexpr std::size_t kSmallWorld = 8;
@@ -75,7 +82,6 @@ std::vector<double> simpler_values(double x) {
 // One case's chain of steps (properties/chain.hpp), its failure, and how it ended: every step checked; no step
 // checked, because w_0 has no expected answer (its next world leaves the double range, or, replayed in the
 // literal profile, it is outside the domain): skipped; or checked up to a world with no expected answer.
-using properties::Chain;
 using Failure = properties::ChainFailure;
 using Ending = Chain::Ending;
 
@@ -83,82 +89,12 @@ using Ending = Chain::Ending;
 // and simplifying keep a failure's kind, so that a candidate that answers NaN on one world and a finite wrong
 // value on a simpler one is shown with its NaN, the fault it was caught by, rather than slipping to another.
 bool same_kind(const Failure& a, const Failure& b) {
+  if (a.fault != b.fault) return false;
+  if (!a.fault.empty()) return true;  // the same fault: a crash shrinks to a crash, a hang to a hang
   const double x = a.difference.actual, y = b.difference.actual;
   if (std::isnan(x) || std::isnan(y)) return std::isnan(x) && std::isnan(y);
   return std::isfinite(x) == std::isfinite(y) && (std::isfinite(x) || x == y);
 }
-
-// The most cases conform asks the candidate about in one Checker::run_all, which sends every request whose
-// world is known before reading their answers (ProcessCandidate also bounds the bytes in flight), so that they
-// share one round trip through the pipes. A batch of requests ends sooner, at a case that chains another step:
-// by default at each tangent-after-step case, one in 17, so about 14 requests a batch (docs/benchmarks.md);
-// with --steps 2 or more, at every case, so 2. The bound matters when no case chains, and bounds the requests
-// a failing run asks beyond the case-by-case run's.
-constexpr std::size_t kBatchCases = 64;
-
-class Checker {
- public:
-  Checker(Candidate& candidate, const Options& options) : candidate_(candidate), options_(options) {}
-
-  // Chains `steps` steps from w.
-  std::optional<Failure> run(const Circles& w, std::uint64_t steps, Ending& ending) {
-    Chain chain(w, steps, options_.level);
-    run_all(std::span(&chain, 1));
-    ending = chain.ending();
-    return std::move(chain.failure());
-  }
-
-  // Runs the chains as run() would run them one after another, up to the first that fails: returns its index
-  // (its `failure` set), or chains.size() if none does. The candidate is asked in batches
-  // (Candidate::answer_all): every request whose world is known, in the order of the sequential run, up to
-  // and including the first whose answer a later request needs (a step of a chain that goes on). So the
-  // candidate gets the sequential run's requests in the same order, with the same ids (a step that carries
-  // state from one request to the next is caught as before), plus, after a failing request, the rest of its
-  // batch, whose answers are read and not judged.
-  std::size_t run_all(std::span<Chain> chains) {
-    std::vector<Circles> asked, expected;
-    std::vector<std::size_t> whose;  // asked[i] is the next step of chains[whose[i]]
-    for (std::size_t first = 0; first < chains.size();) {
-      asked.clear();
-      expected.clear();
-      whose.clear();
-      std::size_t next = chains.size();  // where the next batch starts: the chain that goes on, if any
-      for (std::size_t k = first; k < chains.size(); ++k) {
-        Chain& chain = chains[k];
-        if (!chain.going()) continue;
-        auto reference = properties::expected_step(chain.input(), options_.profile);
-        if (!std::holds_alternative<Circles>(reference)) {
-          chain.end();
-          continue;
-        }
-        asked.push_back(chain.input());
-        expected.push_back(std::move(std::get<Circles>(reference)));
-        whose.push_back(k);
-        if (chain.goes_on_after_next()) {  // its next request waits for this answer
-          next = k;
-          break;
-        }
-      }
-      if (asked.empty()) break;
-      Answers read = candidate_.answer_all(asked, next_id_);
-      std::vector<Circles>& answers = read.answers;
-      next_id_ += asked.size();
-      // The answers before a fault are judged first: a wrong one is the counterexample the sequential run
-      // reports, even when the candidate then breaks on a request the sequential run would not have sent.
-      for (std::size_t i = 0; i < answers.size(); ++i) {
-        if (!chains[whose[i]].judge(std::move(answers[i]), std::move(expected[i]))) return whose[i];
-      }
-      if (read.broken) throw *read.broken;
-      first = next;
-    }
-    return chains.size();
-  }
-
- private:
-  Candidate& candidate_;
-  const Options& options_;
-  std::uint64_t next_id_ = 1;
-};
 
 // Case c's family and generator: the families of the profile in turn.
 class Cases {
@@ -171,11 +107,14 @@ class Cases {
   std::size_t family(std::uint64_t c) const { return static_cast<std::size_t>(c % families_.size()); }
   // Case c's world from its random stream. RapidCheck's sizes cycle 0 … 99 over a run (the families'
   // generators ignore it). A big family's world is its round's (c / F), which does not shrink: Run::shrink
-  // removes its circles by delta debugging instead.
-  rc::Shrinkable<Circles> world(std::uint64_t c, const rc::Random& random) const {
+  // removes its circles by delta debugging instead; with `circles`, it is the ladder's world of that size (the
+  // family's largest with at most that many circles).
+  rc::Shrinkable<Circles> world(std::uint64_t c, const rc::Random& random,
+                                std::optional<std::size_t> circles = std::nullopt) const {
     const properties::Family f = families_[family(c)];
     if (properties::is_big(f))
-      return rc::shrinkable::just(properties::gen::big_world(f, c / families_.size(), max_circles_, random));
+      return rc::shrinkable::just(properties::gen::big_world(f, c / families_.size(), circles.value_or(max_circles_),
+                                                             random, circles.has_value()));
     return gens_[family(c)](random, static_cast<int>(c % rc::kNominalSize));
   }
 
@@ -298,7 +237,7 @@ namespace {
 class Run {
  public:
   Run(Candidate& candidate, const Options& options, Verdict& verdict)
-      : candidate_(candidate), options_(options), verdict_(verdict), checker_(candidate, options) {}
+      : candidate_(candidate), options_(options), verdict_(verdict), jobs_(candidate, options, options.jobs) {}
 
   void operator()() {
     replay_corpus();
@@ -306,6 +245,7 @@ class Run {
     check_cases();
     if (verdict_.counterexample && !options_.keep_going) return;
     candidate_.finish();
+    jobs_.finish();
     require_every_family();
   }
 
@@ -323,6 +263,7 @@ class Run {
     c.expected = std::move(failure.expected);
     c.actual = std::move(failure.actual);
     c.difference = std::move(failure.difference);
+    c.fault = std::move(failure.fault);
     const bool first = !verdict_.counterexample;
     if (result) {
       result->status = FamilyStatus::failed;
@@ -351,7 +292,7 @@ class Run {
       FamilyResult* result = result_of(stored.family);
       if (result && (skipped(result->family) || result->status == FamilyStatus::failed)) continue;
       Ending ending = Ending::checked;
-      std::optional<Failure> failure = checker_.run(stored.world, options_.steps, ending);
+      std::optional<Failure> failure = jobs_.first().run(stored.world, options_.steps, ending);
       if (ending == Ending::no_reference_at_w0) {
         ++verdict_.not_replayed;
         continue;
@@ -371,80 +312,177 @@ class Run {
     }
   }
 
-  // 2. The generated cases, in rounds of one case per family.
+  // 2. The generated cases, in rounds of one case per family: a fixed schedule of `cases` (--cases, --shard,
+  // --case), or the budget's (--budget): rounds of the small families, then the ladder's big worlds. Each is
+  // asked in stages (run_stage), and the first failing case of each failing family (the first only, without
+  // --keep-going) is shrunk, in case order.
   void check_cases() {
-    const std::span<const properties::Family> families = cases_.families();
-    const std::uint64_t F = families.size();
-    rc::Random stream(options_.seed);
-    // The cases of this run, checked kBatchCases at a time (Checker::run_all), then counted and, for the first
-    // that fails (with --keep-going, of each family), shrunk, in order: the verdict is the sequential run's.
-    struct Case {
-      std::uint64_t index;
-      std::size_t family;
-      rc::Shrinkable<Circles> world;
-    };
-    struct Failing {
-      Case drawn;
-      std::uint64_t steps;
-      Failure failure;
-    };
-    std::vector<Case> batch;
-    std::vector<Chain> chains;
-    std::vector<Failing> failing;  // the first failing case of each family that fails, in case order
-    // Checks the batch, counting its cases up to the first that fails, or with --keep-going all of them: a case
-    // of a family that failed earlier in the batch is asked, but neither counted nor shrunk, so that a failing
-    // family's count is its cases up to its first failure.
-    const auto check_batch = [&]() {
-      for (std::size_t from = 0; from < chains.size();) {
-        const std::size_t failed = from + checker_.run_all(std::span(chains).subspan(from));
-        for (std::size_t k = from; k < chains.size() && k <= failed; ++k) {
-          FamilyResult& family = verdict_.families[batch[k].family];
-          if (family.status == FamilyStatus::failed) continue;
-          ++verdict_.cases;
-          ++family.drawn;
-          if (chains[k].ending() == Ending::no_reference_at_w0) ++verdict_.skipped;
-          else ++family.checked;
-          verdict_.cut_short += chains[k].ending() == Ending::no_reference_later;
-        }
-        if (failed == chains.size()) break;
-        FamilyResult& family = verdict_.families[batch[failed].family];
-        if (family.status != FamilyStatus::failed) {
-          family.status = FamilyStatus::failed;
-          failing.push_back({batch[failed], chains[failed].steps(), std::move(*chains[failed].failure())});
-        }
-        if (!options_.keep_going) return;
-        from = failed + 1;
-      }
-      batch.clear();
-      chains.clear();
-      if (options_.progress) options_.progress(verdict_);
-    };
-    // --case I replays case I whatever --cases says: the replay line of a report does not repeat it.
-    const std::uint64_t end = options_.only_case ? *options_.only_case + 1 : options_.cases;
-    for (std::uint64_t c = 0; c < end && (failing.empty() || options_.keep_going); ++c) {
-      throw_if_interrupted();  // between cases too: an engine in process has no request to notice it at
-      const rc::Random random = stream.split();  // case c's stream, whichever cases this run checks
-      if (options_.only_case ? c != *options_.only_case : (c / F) % options_.shards != options_.shard) continue;
-      const std::size_t family = cases_.family(c);
-      // A skipped family, and with --keep-going one that failed already (here or in the corpus), is not asked.
-      if (skipped(families[family]) || verdict_.families[family].status == FamilyStatus::failed) continue;
-      // At least as far as the family's boundary: tangent-after-step's tangency is decided at the second step.
-      const std::uint64_t steps = std::max(options_.steps, properties::steps_to_decide(families[family]));
-      batch.push_back(Case{c, family, cases_.world(c, random)});
-      chains.emplace_back(batch.back().world.value(), steps, options_.level);
-      if (batch.size() == kBatchCases) check_batch();
-    }
-    if (!batch.empty() && (failing.empty() || options_.keep_going)) check_batch();
-    for (Failing& f : failing) shrink(std::move(f.drawn.world), f.drawn.index, f.drawn.family, f.steps, std::move(f.failure));
+    if (options_.budget && !options_.only_case) budget_cases();
+    else fixed_cases();
+    for (Failing& f : failing_) shrink(std::move(f.drawn.world), f.drawn.index, f.drawn.family, f.drawn.circles,
+                                       f.steps, std::move(f.failure));
   }
 
+  // One case to ask: its index, its family's index in the profile, the size of a ladder's world (none: the
+  // fixed schedule's) and its world.
+  struct Case {
+    std::uint64_t index;
+    std::size_t family;
+    std::optional<std::size_t> circles;
+    rc::Shrinkable<Circles> world;
+  };
+  struct Failing {
+    Case drawn;
+    std::uint64_t steps;
+    Failure failure;
+  };
+
+  // Case c's random stream: the c-th split of the seed's, whichever cases this run asks.
+  const rc::Random& random_of(std::uint64_t c) {
+    while (randoms_.size() <= c) randoms_.push_back(stream_.split());
+    return randoms_[c];
+  }
+
+  // Whether a case of the family with index `family` is asked: not a skipped family, nor, with --keep-going,
+  // one that failed already (here or in the corpus).
+  bool asked(std::size_t family) const {
+    return !skipped(cases_.families()[family]) && verdict_.families[family].status != FamilyStatus::failed;
+  }
+
+  Case draw(std::uint64_t c, const rc::Random& random, std::optional<std::size_t> circles) const {
+    return Case{c, cases_.family(c), circles, cases_.world(c, random, circles)};
+  }
+
+  // Counts a case asked, unless its family failed earlier.
+  void count(const Case& c, const Chain& chain) {
+    FamilyResult& family = verdict_.families[c.family];
+    if (family.status == FamilyStatus::failed) return;
+    ++verdict_.cases;
+    ++family.drawn;
+    if (chain.ending() == Ending::no_reference_at_w0) ++verdict_.skipped;
+    else ++family.checked;
+    verdict_.cut_short += chain.ending() == Ending::no_reference_later;
+    if (properties::is_big(family.family))
+      verdict_.largest_world = std::max(verdict_.largest_world, c.world.value().size());
+  }
+
+  // Asks a stage of cases, its units on every job at once (Jobs), then counts them in case order up to the
+  // first that fails, or with --keep-going all of them, as a run of one case after another counts them: a case
+  // of a family that failed earlier is asked, but neither counted nor shrunk, so that a failing family's count
+  // is its cases up to its first failure. Returns false when the run stops there (a failure, without
+  // --keep-going). A candidate that broke is reported after the cases before it are counted.
+  bool run_stage(std::vector<Case>& stage) {
+    std::vector<Chain> chains;
+    chains.reserve(stage.size());
+    for (const Case& c : stage)
+      // At least as far as the family's boundary: tangent-after-step's tangency is decided at the second step.
+      chains.emplace_back(c.world.value(),
+                          std::max(options_.steps, properties::steps_to_decide(cases_.families()[c.family])),
+                          options_.level);
+    const auto units = jobs_.units(chains.size());
+    std::vector<UnitOutcome> outcomes = jobs_.run(chains, units, options_.keep_going);
+    for (std::size_t u = 0; u < units.size(); ++u) {
+      const auto [from, to] = units[u];
+      std::size_t k = from;
+      for (const std::size_t f : outcomes[u].failed) {
+        // A program that breaks on the first world of a run, before any answer, cannot be checked at all; on the
+        // one case of --case, it breaks on that case's world, as its replay line says.
+        const Failure& failure = *chains[from + f].failure();
+        if (!failure.fault.empty() && failure.step == 1 && from + f == 0 && verdict_.cases == 0 &&
+            verdict_.replayed == 0 && !options_.only_case)
+          throw BrokenCandidate(failure.difference.decision.substr(std::string_view("none: ").size()));
+        for (; k <= from + f; ++k) count(stage[k], chains[k]);
+        FamilyResult& family = verdict_.families[stage[from + f].family];
+        if (family.status != FamilyStatus::failed) {
+          family.status = FamilyStatus::failed;
+          failing_.push_back({stage[from + f], chains[from + f].steps(), std::move(*chains[from + f].failure())});
+        }
+        if (!options_.keep_going) return false;
+      }
+      if (outcomes[u].broken) std::rethrow_exception(outcomes[u].broken);
+      for (; k < to; ++k) count(stage[k], chains[k]);
+    }
+    if (options_.progress) options_.progress(verdict_);
+    return true;
+  }
+
+  // The cases a stage holds: kBatchCases for each job.
+  std::size_t stage_size() const { return Jobs::kBatchCases * std::max(options_.jobs, 1u); }
+
+  // The fixed schedule: cases 0 … cases − 1 of the shard's rounds, or the one case of --case (whatever --cases
+  // says: the replay line of a report does not repeat it), with its ladder size if it has one.
+  void fixed_cases() {
+    const std::uint64_t F = cases_.families().size();
+    std::vector<Case> stage;
+    const std::uint64_t end = options_.only_case ? *options_.only_case + 1 : options_.cases;
+    for (std::uint64_t c = 0; c < end; ++c) {
+      throw_if_interrupted();  // between cases too: an engine in process has no request to notice it at
+      const rc::Random random = stream_.split();  // case c's stream, whichever cases this run checks
+      if (options_.only_case ? c != *options_.only_case : (c / F) % options_.shards != options_.shard) continue;
+      if (!asked(cases_.family(c))) continue;
+      stage.push_back(draw(c, random, options_.only_case ? options_.circles : std::nullopt));
+      if (stage.size() == stage_size()) {
+        if (!run_stage(stage)) return;
+        stage.clear();
+      }
+    }
+    if (!stage.empty()) run_stage(stage);
+  }
+
+  // The budget's schedule: rounds 0, 1, … of the small families, up to kSmallRounds of them or kSmallShare of the
+  // budget; then the ladder (conform/ladder.hpp): stage k asks round k of the big families, each at the size the
+  // ladder gives for the time left. The first stage of each part runs whatever the budget, so that every family
+  // is checked.
+  void budget_cases() {
+    const auto start = std::chrono::steady_clock::now();
+    const auto elapsed = [start] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+    const double budget = *options_.budget;
+    const std::uint64_t F = cases_.families().size();
+    const auto round = [&](std::uint64_t q, bool big, std::optional<std::size_t> circles, std::vector<Case>& stage) {
+      throw_if_interrupted();
+      for (std::size_t f = 0; f < F; ++f)
+        if (properties::is_big(cases_.families()[f]) == big && asked(f))
+          stage.push_back(draw(q * F + f, random_of(q * F + f), circles));
+    };
+    std::vector<Case> stage;
+    for (std::uint64_t q = 0; q < kSmallRounds; ++q) {
+      round(q, false, std::nullopt, stage);
+      if (stage.size() < stage_size() && q + 1 < kSmallRounds) continue;
+      const bool first = verdict_.cases == 0;
+      if (!first && elapsed() > kSmallShare * budget) break;
+      if (!stage.empty() && !run_stage(stage)) return;
+      stage.clear();
+    }
+    Ladder ladder(options_.max_circles);
+    for (std::uint64_t q = 0;; ++q) {
+      const std::optional<std::size_t> size = ladder.next(budget - elapsed());
+      if (!size) break;
+      stage.clear();
+      round(q, true, size, stage);
+      if (stage.empty()) break;
+      const double before = elapsed();
+      if (!run_stage(stage)) return;
+      ladder.took(*size, elapsed() - before);
+    }
+  }
+
+  // The budget's rounds of the small families: as many as the fixed schedule's default of 1000 cases has.
+  static constexpr std::uint64_t kSmallRounds = 40;
+  // The share of the budget after which no further round of the small families starts, leaving the rest to the
+  // ladder's big worlds.
+  static constexpr double kSmallShare = 0.25;
+
   // Shrinks case c's failure (of the family with index `family`) and records it as the family's counterexample.
-  void shrink(rc::Shrinkable<Circles> world, std::uint64_t c, std::size_t family, std::uint64_t steps, Failure failure) {
+  void shrink(rc::Shrinkable<Circles> world, std::uint64_t c, std::size_t family, std::optional<std::size_t> circles,
+              std::uint64_t steps, Failure failure) {
     const std::span<const properties::Family> families = cases_.families();
     Counterexample counterexample;
     counterexample.shrink_path = {world.value()};
     counterexample.circles_before = world.value().size();
-    int queries = 0;
+    // Each world on which a program hangs costs its deadline: a hang is shrunk a few worlds at most (the queries
+    // count up to kMaxShrinkQueries from further on).
+    int queries = failure.fault == name(Fault::hung) ? kMaxShrinkQueries - kMaxHangShrinkQueries : 0;
+    shrink_until_ = std::chrono::steady_clock::now() + kMaxShrinkTime;
     // A world bigger than the small families' loses its circles by delta debugging first; a small family's
     // world then shrinks through its generator's shrinks (RapidCheck's), which drop circles one at a time and
     // simplify the family's integers.
@@ -470,11 +508,13 @@ class Run {
         }
       }
     }
-    if (options_.simplify) simplify(world.value(), steps, failure, counterexample);
+    if (options_.simplify && failure.fault.empty()) simplify(world.value(), steps, failure, counterexample);
     counterexample.family = properties::name(families[family]);
     counterexample.case_index = c;
-    counterexample.replay = replay_command(candidate_.option(), options_, c);
-    if (!options_.save.empty()) {
+    counterexample.replay = replay_command(candidate_.option(), options_, c, circles);
+    if (!options_.save.empty() && !failure.fault.empty()) {
+      counterexample.not_saved = "a program that " + failure.fault + " is replayed by its replay line, not stored";
+    } else if (!options_.save.empty()) {
       const StoredCounterexample stored{options_.profile, failure.input, options_.level.text(), counterexample.family,
                                         candidate_.name(), options_.seed, c, steps, failure.step, failure.expected,
                                         failure.actual, failure.difference};
@@ -490,16 +530,16 @@ class Run {
   // The failure of the case chained `steps` steps from w, if it fails with the same kind of value as `failure`
   // (same_kind); nothing if it passes, fails otherwise, or breaks the candidate (a world on which the candidate
   // crashes, hangs or writes a malformed line does not show the wrong answer being shrunk; the next world is
-  // asked of the program started afresh). Once a signal has interrupted the check, no world is asked: the
-  // counterexample is the world shrunk so far, reported with the interruption. `tries` counts the worlds asked.
+  // asked of the program started afresh). Once a signal has interrupted the check, or the shrinking's time is
+  // spent, no world is asked: the counterexample is the world shrunk so far. `tries` counts the worlds asked.
   std::optional<Failure> still_fails(const Circles& w, std::uint64_t steps, const Failure& failure,
                                      std::uint64_t& tries) {
-    if (interruption()) return std::nullopt;
+    if (interruption() || std::chrono::steady_clock::now() > shrink_until_) return std::nullopt;
     ++tries;
     Ending e = Ending::checked;
     std::optional<Failure> f;
     try {
-      f = checker_.run(w, steps, e);
+      f = jobs_.first().run(w, steps, e);
     } catch (const BrokenCandidate&) {
       return std::nullopt;
     } catch (const Interrupted&) {
@@ -589,8 +629,12 @@ class Run {
   Candidate& candidate_;
   const Options& options_;
   Verdict& verdict_;
-  Checker checker_;
+  Jobs jobs_;
   const Cases cases_{options_.profile, options_.max_circles};
+  rc::Random stream_{options_.seed};
+  std::vector<rc::Random> randoms_;
+  std::vector<Failing> failing_;  // the first failing case of each family that fails, in case order
+  std::chrono::steady_clock::time_point shrink_until_{};  // when shrinking the counterexample at hand stops
 };
 
 }  // namespace
@@ -635,6 +679,9 @@ Verdict check(Candidate& candidate, const Options& options) {
   } catch (const ConformError& e) {
     could_check = false;
     verdict.error = e.what();
+  } catch (const spec::OutsideC& e) {  // a generated world conform's reference refuses: a bug of conform's own
+    could_check = false;
+    verdict.error = std::string("conform drew a world its reference refuses: ") + e.what();
   }
   // A signal while a counterexample was shrunk ends the shrinking, not the run: the run is interrupted all the same.
   if (const int signal = interruption(); signal && !verdict.signal) {

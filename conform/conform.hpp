@@ -45,6 +45,12 @@ using properties::Profile;
 
 struct Verdict;
 
+// The most circles of a big world in a budget run, unless told otherwise (--max-circles): past the thresholds
+// at which programs commonly start threads (10^4 to 3·10^4), up to where a fast program gets in a minute.
+inline constexpr std::size_t kBudgetMaxCircles = 1'000'000;
+// The seconds of a run with no fixed schedule (`circles conform` without --cases, --shard or --case).
+inline constexpr double kDefaultBudget = 60;
+
 struct Options {
   Level level;
   std::uint64_t cases = 1000;
@@ -69,6 +75,15 @@ struct Options {
   // The most circles of a big family's world (--max-circles; properties::gen::big_world): the default crosses
   // every power of two up to 4096; a fast program can be taken to 10^5 or 10^6 circles.
   std::size_t max_circles = properties::kDefaultMaxCircles;
+  // The time budget in seconds (--budget; docs/conform.md, "The time budget"): rounds of the small families,
+  // then big worlds on a ladder of sizes up to max_circles, as far as the candidate's measured speed allows.
+  // None: the fixed schedule of `cases` rounds.
+  std::optional<double> budget{};
+  // With only_case: the case's world is the ladder's world of this many circles (--circles), as a budget run's
+  // replay line asks.
+  std::optional<std::size_t> circles{};
+  // Copies of the candidate asked at once (--jobs), each its own cases; the verdict is the same for every count.
+  unsigned jobs = 1;
   // Called after each batch of generated cases with the verdict so far (its cases, its families' statuses), for
   // a progress line; none by default.
   std::function<void(const Verdict&)> progress{};
@@ -121,6 +136,10 @@ struct Counterexample {
   std::uint64_t step = 1, steps = 1;           // the failing step of the chain (1-based) and the chain's length
   Circles input, expected, actual;             // the world asked at that step, and the two answers
   Difference difference;
+  // Not a wrong answer but none: how the program broke instead of answering ("crashed or exited", "hung", "wrote
+  // a malformed answer"; conform::Fault), `actual` empty and difference.decision the whole message. "" for a
+  // wrong answer.
+  std::string fault;
   // Shrinking: the world drawn, then each simpler w_0 that still failed, in order (the last the one reported):
   // first fewer circles (RapidCheck's shrinks), then numbers simplified one at a time.
   std::vector<Circles> shrink_path;
@@ -165,6 +184,7 @@ struct Verdict {
   // When the outcome is interrupted, the command that checks the same cases again (conform/replay.hpp).
   std::string rerun{};
   std::chrono::duration<double> elapsed{};       // wall time of the check
+  std::size_t largest_world = 0;                 // the most circles of a big family's world checked
   // The shards a verdict merged from their reports combines (conform/merge.hpp), in order; empty for a run's
   // own verdict, whose shard is options.shard.
   std::vector<std::uint64_t> merged_shards{};

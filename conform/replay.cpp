@@ -1,5 +1,6 @@
 #include "conform/replay.hpp"
 
+#include "formats/json_number.hpp"
 #include "properties/boundaries.hpp"
 
 #include <algorithm>
@@ -29,12 +30,14 @@ void add(std::string& command, std::string_view option, std::string_view value =
 }
 
 // The options that choose how a world is judged and which worlds a family draws: the level, the steps, the
-// profile, the largest world, the families checked.
-void add_judging(std::string& command, const Options& options) {
+// profile, the largest world (with `max_circles`: a replay's case needs none in a budget run, whose ladder case
+// says its size with --circles), the families checked.
+void add_judging(std::string& command, const Options& options, bool max_circles) {
   add(command, "--level", shell_quoted(options.level.text()));
   if (options.steps > 1) add(command, "--steps", std::to_string(options.steps));
   if (options.profile == Profile::literal) add(command, "--profile", "literal");
-  if (options.max_circles != properties::kDefaultMaxCircles)
+  const std::size_t default_max = options.budget ? kBudgetMaxCircles : properties::kDefaultMaxCircles;
+  if (max_circles && options.max_circles != default_max)
     add(command, "--max-circles", std::to_string(options.max_circles));
   if (!options.skip.empty()) {
     std::string checked, skipped;
@@ -51,17 +54,19 @@ void add_judging(std::string& command, const Options& options) {
 
 }  // namespace
 
-std::string replay_command(std::string_view candidate, const Options& options, std::optional<std::uint64_t> case_index) {
+std::string replay_command(std::string_view candidate, const Options& options, std::optional<std::uint64_t> case_index,
+                           std::optional<std::size_t> circles) {
   std::string command = "circles conform";
   if (!candidate.empty()) add(command, candidate);
   if (case_index) {
     add(command, "--seed", std::to_string(options.seed));
     add(command, "--case", std::to_string(*case_index));
+    if (circles) add(command, "--circles", std::to_string(*circles));
   } else {
     add(command, "--save", shell_quoted(options.save.string()));
     add(command, "--cases", "0");
   }
-  add_judging(command, options);
+  add_judging(command, options, !options.budget);
   return command;
 }
 
@@ -69,12 +74,24 @@ std::string rerun_command(std::string_view candidate, const Options& options) {
   std::string command = "circles conform";
   if (!candidate.empty()) add(command, candidate);
   add(command, "--seed", std::to_string(options.seed));
+  // A budget run again (its ladder's sizes follow the program's speed, so its big worlds may differ), or the
+  // fixed schedule's cases.
   if (options.only_case) add(command, "--case", std::to_string(*options.only_case));
-  else if (options.cases != Options{}.cases) add(command, "--cases", std::to_string(options.cases));
+  else if (options.budget) {
+    if (*options.budget != kDefaultBudget) {
+      std::string seconds;  // "90", "0.5"
+      formats::json_number::append(seconds, *options.budget);
+      if (seconds.ends_with(".0")) seconds.resize(seconds.size() - 2);
+      add(command, "--budget", seconds);
+    }
+  } else {
+    add(command, "--cases", std::to_string(options.cases));
+  }
+  if (options.only_case && options.circles) add(command, "--circles", std::to_string(*options.circles));
   if (options.shards > 1) add(command, "--shard", std::to_string(options.shard) + "/" + std::to_string(options.shards));
   if (!options.save.empty()) add(command, "--save", shell_quoted(options.save.string()));
   if (options.keep_going) add(command, "--keep-going");
-  add_judging(command, options);
+  add_judging(command, options, true);
   return command;
 }
 

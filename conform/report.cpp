@@ -194,6 +194,8 @@ std::vector<FamilyResult> families_of(const nlohmann::json& r, Profile profile, 
 
 std::string difference_line(const Counterexample& c) {
   const properties::Difference& d = c.difference;
+  if (!c.fault.empty())
+    return "step " + std::to_string(c.step) + " of " + std::to_string(c.steps) + ": no answer: the program " + c.fault;
   return "step " + std::to_string(c.step) + " of " + std::to_string(c.steps) + ", circle " + std::to_string(d.circle) +
          ", field " + spec::name(d.field) + ": expected " + json_number::decimal_and_hex(d.expected) +
          ", got " + json_number::decimal_and_hex(d.actual);

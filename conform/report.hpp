@@ -45,7 +45,8 @@ class ReportError : public std::runtime_error {
 };
 
 // "step 1 of 1, circle 0, field px: expected 0.5 (0x1p-1), got 0.25 (0x1p-2)": the line that names where a
-// counterexample differs.
+// counterexample differs; for a program that broke instead of answering, "step 1 of 1: no answer: the program
+// crashed or exited".
 std::string difference_line(const Counterexample& c);
 
 // A counterexample other than the run's (which is printed whole) in three lines: its difference_line, which

@@ -15,21 +15,102 @@ namespace {
 
 using spec::CircleDoubles;
 
-constexpr Family kAll[] = {
-    Family::lattice,      Family::random_doubles,  Family::tangency,           Family::ulp_nudge,
-    Family::tie_px,       Family::tie_p,           Family::tie_p_vx,           Family::tie_p_v,
-    Family::duplicates,   Family::incomparable,    Family::mutual_contacts,    Family::tangent_after_step,
-    Family::square_overflow, Family::subnormals,   Family::cancellation,       Family::signed_zeros,
-    Family::zero_radius,  Family::sizes,           Family::crowds,             Family::cell_crowds,
-    Family::radius_spread, Family::long_rows,      Family::index_bits,         Family::order_borders,
-    Family::big_chains,
+// The table of families: one row each, in the order of Family. steps: 2 for tangent_after_step, whose circles
+// become tangent in w_1, a tangency only the step from w_1 decides; 3 for big_chains, chained so that whatever a
+// program keeps from one request to the next is used; 1 for every other family, whose boundary is in w_0.
+constexpr FamilyRow kRows[] = {
+    {Family::lattice, "lattice", true, false, 1,
+     "the property suite's exact worlds (gen::world), rounded: copies, ties, tangencies",
+     detail::lattice, nullptr},
+    {Family::random_doubles, "random-doubles", true, false, 1,
+     "every field from gen::finite_double(): every binade, ±0, subnormals, near DBL_MAX",
+     detail::random_doubles, nullptr},
+    {Family::tangency, "tangency", true, false, 1,
+     "exact tangency in every binade: a scaled Pythagorean triple, translated, r_a + r_b split",
+     detail::tangency, nullptr},
+    {Family::ulp_nudge, "ulp-nudge", true, false, 1,
+     "a tangency with one coordinate moved by ±1 … 3 ulps: just inside or just outside",
+     detail::ulp_nudge, nullptr},
+    {Family::tie_px, "tie-px", true, false, 1,
+     "two contacts of one circle with equal px",
+     [](bool literal) { return detail::ties(1, literal); }, nullptr},
+    {Family::tie_p, "tie-p", true, false, 1,
+     "two contacts of one circle with equal p",
+     [](bool literal) { return detail::ties(2, literal); }, nullptr},
+    {Family::tie_p_vx, "tie-p-vx", true, false, 1,
+     "two contacts of one circle with equal p and vx",
+     [](bool literal) { return detail::ties(3, literal); }, nullptr},
+    {Family::tie_p_v, "tie-p-v", true, false, 1,
+     "two contacts of one circle with equal p and v, different r",
+     [](bool literal) { return detail::ties(4, literal); }, nullptr},
+    {Family::duplicates, "duplicates", false, false, 1,
+     "two contacts of one circle exactly equal (resolved only: a set has no duplicates)",
+     [](bool literal) { return detail::ties(5, literal); }, nullptr},
+    {Family::incomparable, "incomparable", true, false, 1,
+     "two contacts of one circle that the product order (6) does not order",
+     detail::incomparable, nullptr},
+    {Family::mutual_contacts, "mutual-contacts", true, false, 1,
+     "three or more circles all touching each other (mutually tangent, or overlapping)",
+     detail::mutual_contacts, nullptr},
+    {Family::tangent_after_step, "tangent-after-step", true, false, 2,
+     "v = 60·q: two circles apart in w_0 are exactly tangent in w_1",
+     detail::tangent_after_step, nullptr},
+    {Family::square_overflow, "square-overflow", true, false, 1,
+     "magnitudes from 2^512 up, where |p_b − p_a|² and (r_a + r_b)² overflow doubles",
+     detail::square_overflow, nullptr},
+    {Family::subnormals, "subnormals", true, false, 1,
+     "positions, radii and velocities below 2^-1022",
+     detail::subnormals, nullptr},
+    {Family::cancellation, "cancellation", true, false, 1,
+     "p ≈ −v/60: the exact p + v/60 is tiny next to p, nudged by up to 3 ulps",
+     detail::cancellation, nullptr},
+    {Family::signed_zeros, "signed-zeros", true, false, 1,
+     "+0 and −0 in every field, equal by value",
+     detail::signed_zeros, nullptr},
+    {Family::zero_radius, "zero-radius", false, false, 1,
+     "r = 0: points on a circle's boundary, coincident points (resolved only)",
+     detail::zero_radius, nullptr},
+    {Family::sizes, "sizes", false, true, 1,
+     "p − 1, p and p + 1 circles for every power of two p from 16 up to the limit, and the limit",
+     nullptr, detail::sizes},
+    {Family::crowds, "crowds", false, true, 1,
+     "hubs touched by 9 … 257 circles each, the least contact at every rank of the index order",
+     nullptr, detail::crowds},
+    {Family::cell_crowds, "cell-crowds", false, true, 1,
+     "5 … 1000 centres in one aligned square of side 2^e, for any e, dense or tangent",
+     nullptr, detail::cell_crowds},
+    {Family::radius_spread, "radius-spread", false, true, 1,
+     "radii over seven decimal orders, the big ones last in the index order, across x quartiles",
+     nullptr, detail::radius_spread},
+    {Family::long_rows, "long-rows", false, true, 1,
+     "one or two rows of tangent circles up to 2048 wide, far out, and their transpose",
+     nullptr, detail::long_rows},
+    {Family::index_bits, "index-bits", false, true, 1,
+     "2^b + 16 … 2^b + 64 circles (b = 8, 16); the least contact i >= 2^b beside a wrong one, i mod 2^b",
+     nullptr, detail::index_bits},
+    {Family::order_borders, "order-borders", false, true, 1,
+     "a contact across every half, quarter and eighth border of the index, x and y orders",
+     nullptr, detail::order_borders},
+    {Family::big_chains, "big-chains", false, true, 3,
+     "random worlds of 64 … 512 moving circles, chained 3 steps",
+     nullptr, detail::big_chains},
 };
-constexpr Family kLiteral[] = {
-    Family::lattice,      Family::random_doubles,  Family::tangency,           Family::ulp_nudge,
-    Family::tie_px,       Family::tie_p,           Family::tie_p_vx,           Family::tie_p_v,
-    Family::incomparable, Family::mutual_contacts, Family::tangent_after_step, Family::square_overflow,
-    Family::subnormals,   Family::cancellation,    Family::signed_zeros,
-};
+
+// Row k is the family k, so that row() is an index.
+constexpr bool rows_in_order() {
+  for (std::size_t k = 0; k < std::size(kRows); ++k)
+    if (static_cast<std::size_t>(kRows[k].family) != k) return false;
+  return true;
+}
+static_assert(rows_in_order(), "the rows of kRows are in the order of Family");
+
+// The families of each profile, in the table's order.
+std::vector<Family> profile_families(bool literal) {
+  std::vector<Family> out;
+  for (const FamilyRow& r : kRows)
+    if (!literal || r.literal) out.push_back(r.family);
+  return out;
+}
 
 // (6) and (7) on all five fields: a <= b in px, py, vx, vy and r. Comparisons of doubles are exact, and
 // −0 == +0 as for the exact values.
@@ -141,50 +222,22 @@ Profile parse_profile(std::string_view text) {
   throw std::invalid_argument("--profile: \"" + std::string(text) + "\" is not resolved or literal");
 }
 
-const char* name(Family family) {
-  switch (family) {
-    case Family::lattice: return "lattice";
-    case Family::random_doubles: return "random-doubles";
-    case Family::tangency: return "tangency";
-    case Family::ulp_nudge: return "ulp-nudge";
-    case Family::tie_px: return "tie-px";
-    case Family::tie_p: return "tie-p";
-    case Family::tie_p_vx: return "tie-p-vx";
-    case Family::tie_p_v: return "tie-p-v";
-    case Family::duplicates: return "duplicates";
-    case Family::incomparable: return "incomparable";
-    case Family::mutual_contacts: return "mutual-contacts";
-    case Family::tangent_after_step: return "tangent-after-step";
-    case Family::square_overflow: return "square-overflow";
-    case Family::subnormals: return "subnormals";
-    case Family::cancellation: return "cancellation";
-    case Family::signed_zeros: return "signed-zeros";
-    case Family::zero_radius: return "zero-radius";
-    case Family::sizes: return "sizes";
-    case Family::crowds: return "crowds";
-    case Family::cell_crowds: return "cell-crowds";
-    case Family::radius_spread: return "radius-spread";
-    case Family::long_rows: return "long-rows";
-    case Family::index_bits: return "index-bits";
-    case Family::order_borders: return "order-borders";
-    case Family::big_chains: return "big-chains";
-  }
-  return "?";
-}
+std::span<const FamilyRow> family_rows() { return kRows; }
+
+const FamilyRow& row(Family family) { return kRows[static_cast<std::size_t>(family)]; }
+
+const char* name(Family family) { return row(family).name; }
 
 void showValue(Family family, std::ostream& os) { os << name(family); }
 
 std::span<const Family> families(Profile profile) {
-  if (profile == Profile::literal) return kLiteral;
-  return kAll;
+  static const std::vector<Family> resolved = profile_families(false), literal = profile_families(true);
+  return profile == Profile::literal ? literal : resolved;
 }
 
-bool is_big(Family family) { return family >= Family::sizes; }
+bool is_big(Family family) { return row(family).big; }
 
-std::uint64_t steps_to_decide(Family family) {
-  if (family == Family::big_chains) return 3;
-  return family == Family::tangent_after_step ? 2 : 1;
-}
+std::uint64_t steps_to_decide(Family family) { return row(family).steps; }
 
 std::optional<std::string> outside_literal_domain(const Circles& w) {
   if (auto v = first_violation(w)) return std::move(v->reason);
@@ -202,7 +255,7 @@ rc::Gen<Circles> boundary_world(Family family, Profile profile) {
   // The family's circles, cut to the literal domain (before shuffling, so that bystanders, placed last, go
   // first), then shuffled: the order of a world must not matter to a step, and a shuffle shrinks to none.
   const rc::Gen<Circles> shuffled = rc::gen::exec([family, profile] {
-    Circles w = *detail::family_world(family, profile);
+    Circles w = *rc::gen::exec([family, profile] { return row(family).build_small(profile == Profile::literal); });
     if (profile == Profile::literal) cut_to_literal_domain(w);
     return permute(w, *permutation(w.size()));
   });

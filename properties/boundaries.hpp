@@ -41,47 +41,68 @@ Profile parse_profile(std::string_view text);
 // holds circles 0 and 1, which (6) does not order".
 std::optional<std::string> outside_literal_domain(const Circles& w);
 
+// The families, in the order a round checks them; what each aims at is its row's (FamilyRow::aim, below).
 enum class Family {
-  lattice,             // the property suite's exact worlds (gen::world), rounded: copies, ties, tangencies
-  random_doubles,      // every field from gen::finite_double(): every binade, ±0, subnormals, near DBL_MAX
-  tangency,            // exact tangency in every binade: a scaled Pythagorean triple, translated, r_a + r_b split
-  ulp_nudge,           // a tangency with one coordinate moved by ±1 … 3 ulps: just inside or just outside
-  tie_px,              // two contacts of one circle with equal px
-  tie_p,               // … with equal p
-  tie_p_vx,            // … with equal p and vx
-  tie_p_v,             // … with equal p and v, different r
-  duplicates,          // … exactly equal (resolved only: a set has no duplicates)
-  incomparable,        // two contacts of one circle that the product order (6) does not order
-  mutual_contacts,     // three or more circles all touching each other (mutually tangent, or overlapping)
-  tangent_after_step,  // v = 60·q: two circles apart in w_0 are exactly tangent in w_1
-  square_overflow,     // magnitudes from 2^512 up, where |p_b − p_a|² and (r_a + r_b)² overflow doubles
-  subnormals,          // positions, radii and velocities below 2^-1022
-  cancellation,        // p ≈ −v/60: the exact p + v/60 is tiny next to p, nudged by up to 3 ulps
-  signed_zeros,        // +0 and −0 in every field, equal by value
-  zero_radius,         // r = 0: points on a circle's boundary, coincident points (resolved only)
-  // The big families (resolved only): worlds of hundreds to thousands of circles, each built around the place
-  // where one kind of optimized step (a broad phase, threads, fixed-size buffers, narrow indices) goes wrong.
-  // docs/conform.md ("Big worlds") says which kind each aims at and why it catches it.
-  sizes,               // p − 1, p and p + 1 circles for every power of two p from 16 up to the limit, and the limit
-  crowds,              // hubs touched by 9 … 257 circles each, the least contact at every rank of the index order
-  cell_crowds,         // 5 … 1000 centres in one aligned square of side 2^e, for any e, dense or tangent
-  radius_spread,       // radii over seven decimal orders, the big ones last in the index order, across x quartiles
-  long_rows,           // one or two rows of tangent circles up to 2048 wide, far out, and their transpose
-  index_bits,          // 2^b + 16 … 2^b + 64 circles (b = 8, 16); the least contact i >= 2^b beside a wrong one, i mod 2^b
-  order_borders,       // a contact across every half, quarter and eighth border of the index, x and y orders
-  big_chains,          // random worlds of 64 … 512 moving circles, chained 3 steps
+  lattice,
+  random_doubles,
+  tangency,
+  ulp_nudge,
+  tie_px,
+  tie_p,
+  tie_p_vx,
+  tie_p_v,
+  duplicates,
+  incomparable,
+  mutual_contacts,
+  tangent_after_step,
+  square_overflow,
+  subnormals,
+  cancellation,
+  signed_zeros,
+  zero_radius,
+  sizes,
+  crowds,
+  cell_crowds,
+  radius_spread,
+  long_rows,
+  index_bits,
+  order_borders,
+  big_chains,
 };
 
-// A short name, for reports and RC_TAG: "tangency", "tie-p-vx", "square-overflow".
+namespace detail {
+class Draw;  // a big world's random stream (properties/detail/big_worlds.cpp)
+}
+
+// A family's row in the table of families: everything conform, the properties, the CLI, the tests and the docs
+// know of it. A new family is a row, its construction (properties/detail/) and its test.
+struct FamilyRow {
+  Family family;
+  const char* name;     // a short name, for reports and RC_TAG: "tangency", "tie-p-vx", "square-overflow"
+  bool literal;         // drawn in the literal profile too (false: resolved only, outside the seed's domain)
+  bool big;             // worlds of hundreds to thousands of circles (gen::big_world), resolved only
+  std::uint64_t steps;  // steps_to_decide
+  const char* aim;      // what it aims at, in a line: the boundary it reaches, the wrong step it catches
+  // Its construction: a small family's world, drawn inside rc::gen::exec (`literal`: for the literal profile);
+  // a big family's world of the `round`-th case, at most `max` circles.
+  Circles (*build_small)(bool literal);
+  Circles (*build_big)(std::uint64_t round, std::size_t max, detail::Draw& draw);
+};
+
+// Every family's row, in the order of Family (the order a round checks them).
+std::span<const FamilyRow> family_rows();
+const FamilyRow& row(Family family);
+
+// A short name, for reports and RC_TAG: "tangency", "tie-p-vx", "square-overflow" (row(family).name).
 const char* name(Family family);
 // How RapidCheck shows a family in a counterexample (a value of gen::boundary_case, say): by its name.
 void showValue(Family family, std::ostream& os);
 
 // The families a profile draws from, in the order above: all of them for resolved; literal leaves out
-// duplicates and zero_radius, which are outside its domain.
+// those whose row is not `literal` (duplicates and zero_radius, outside its domain, and the big families).
 std::span<const Family> families(Profile profile);
 
-// Whether `family` is one of the big families (sizes … big_chains).
+// Whether `family` is one of the big families (row(family).big).
 bool is_big(Family family);
 
 // The most circles a big world has, unless told otherwise (`circles conform --max-circles`): 2^12 + 1, so that
@@ -90,7 +111,7 @@ inline constexpr std::size_t kDefaultMaxCircles = 4097;
 // The least the limit can be: 2^8 + 64, so that index_bits always crosses 2^8.
 inline constexpr std::size_t kMinMaxCircles = 320;
 
-// The steps a chain from a world of `family` needs to reach the family's boundary: 2 for tangent_after_step,
+// The steps a chain from a world of `family` needs (row(family).steps) to reach the family's boundary: 2 for tangent_after_step,
 // whose circles become tangent in w_1, a tangency only the step from w_1 decides; 1 for every other family,
 // whose boundary is in w_0. `circles conform` and step_conforms chain each case at least this far, whatever
 // steps they are asked for, so that the default of one step decides every family's boundary. 3 for big_chains,
@@ -107,9 +128,12 @@ rc::Gen<Circles> boundary_world(Family family, Profile profile);
 
 // The world of the big family's `round`-th case (its cases counted from 0), at most max(max_circles,
 // kMinMaxCircles) circles, from `random`: the first rounds go up in size until the family's largest world, the
-// rounds after come mostly small (docs/conform.md, "Big worlds"). Not shuffled: each family places its circles
-// in the index order on purpose. properties/detail/big_worlds.cpp builds them.
-Circles big_world(Family family, std::uint64_t round, std::size_t max_circles, rc::Random random);
+// rounds after come mostly small (docs/conform.md, "Big worlds"); with `largest`, every round's world is of the
+// family's largest size under the limit (a step of conform's ladder of sizes). Not shuffled: each family places
+// its circles in the index order on purpose. properties/detail/big_worlds.cpp builds them. A small family's is
+// empty.
+Circles big_world(Family family, std::uint64_t round, std::size_t max_circles, rc::Random random,
+                  bool largest = false);
 
 // A family of `profile` (uniformly; shrinks towards lattice) and a world of it.
 rc::Gen<std::pair<Family, Circles>> boundary_case(Profile profile);

@@ -12,6 +12,8 @@
 #include "properties/conformance.hpp"
 
 #include <cstdint>
+#include <limits>
+#include <string>
 #include <optional>
 #include <utility>
 
@@ -23,6 +25,10 @@ struct ChainFailure {
   std::uint64_t step, steps;
   Circles input, expected, actual;
   Difference difference;
+  // Not a wrong answer but none: how the candidate broke instead of answering ("crashed or exited", "hung",
+  // "wrote a malformed answer"), with `actual` empty and the whole message in difference.decision. "" for an
+  // answer that differs.
+  std::string fault{};
 };
 
 class Chain {
@@ -50,6 +56,14 @@ class Chain {
     }
     input_ = std::move(answer);
     return true;
+  }
+  // Ends the chain at step step() + 1 with a failure: the candidate broke (`fault`, the kind; `what`, how)
+  // instead of answering; `expected` is the reference's answer.
+  void broke(Circles expected, std::string fault, std::string what) {
+    ++step_;
+    Difference d{0, spec::Field::px, expected.empty() ? 0.0 : expected[0][0],
+                 std::numeric_limits<double>::quiet_NaN(), "none: " + std::move(what)};
+    failure_ = ChainFailure{step_, steps_, std::move(input_), std::move(expected), {}, std::move(d), std::move(fault)};
   }
   // Ends the chain before step step() + 1, which has no reference answer.
   void end() noexcept { ended_ = true; }

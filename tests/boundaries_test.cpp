@@ -280,3 +280,39 @@ TEST(expected_step, is_the_same_in_both_profiles_inside_the_literal_domain) {
 }
 
 }  // namespace
+
+namespace {
+
+// The table of families: each family's row is where everything reads it. A family has exactly one
+// construction, a big one when it is big; names are distinct; the literal profile has no big family and no
+// family whose worlds leave its domain; a big world of a small family is empty.
+TEST(family_rows, hold_one_construction_each_and_the_profiles_read_them) {
+  std::map<std::string, int> names;
+  std::size_t literal = 0, big = 0;
+  for (const properties::FamilyRow& r : properties::family_rows()) {
+    SCOPED_TRACE(r.name);
+    EXPECT_EQ(&properties::row(r.family), &r);
+    EXPECT_EQ(++names[r.name], 1);
+    EXPECT_NE(r.build_small == nullptr, r.build_big == nullptr);
+    EXPECT_EQ(r.big, r.build_big != nullptr);
+    EXPECT_EQ(properties::is_big(r.family), r.big);
+    EXPECT_GE(r.steps, 1u);
+    EXPECT_GT(std::string(r.aim).size(), 20u);
+    if (r.big) {
+      EXPECT_FALSE(r.literal);
+    } else {
+      EXPECT_TRUE(properties::gen::big_world(r.family, 0, 4097, rc::Random(1)).empty());
+    }
+    literal += r.literal;
+    big += r.big;
+  }
+  EXPECT_EQ(properties::families(Profile::resolved).size(), properties::family_rows().size());
+  EXPECT_EQ(properties::families(Profile::literal).size(), literal);
+  EXPECT_EQ(big, 8u);
+  EXPECT_EQ(properties::steps_to_decide(Family::tangent_after_step), 2u);
+  EXPECT_EQ(properties::steps_to_decide(Family::big_chains), 3u);
+  EXPECT_FALSE(properties::row(Family::zero_radius).literal);
+  EXPECT_FALSE(properties::row(Family::duplicates).literal);
+}
+
+}  // namespace

@@ -55,17 +55,39 @@ TEST(candidate, an_engine_is_broken_by_an_answer_beyond_the_double_range) {
   EXPECT_STREQ(e->what(), "request 6: step 1, circle 1, field px: the position p + v/60 overflows to infinity");
 }
 
-// The deadline grows as an O(n²) step's time beyond kDeadlineCircles, by (n / 512)², not by whole multiples
-// of 512: 4097 circles are 64.03… times 512², not 64 times.
-TEST(candidate, grows_the_deadline_with_the_square_of_the_circles_beyond_512) {
+// Before any answer, the deadline grows as an O(n²) step's time beyond kFirstCircles, by (n / 512)², not by
+// whole multiples of 512: 4097 circles are 64.03… times 512², not 64 times.
+TEST(deadlines, before_any_answer_grow_with_the_square_of_the_circles_beyond_512) {
   using std::chrono::milliseconds;
-  EXPECT_EQ(ProcessCandidate::deadline_for(10s, 0), 10s);
-  EXPECT_EQ(ProcessCandidate::deadline_for(10s, 512), 10s);
-  EXPECT_EQ(ProcessCandidate::deadline_for(10s, 513), milliseconds(10039));  // 10000 · (513/512)² = 10039.10…
-  EXPECT_EQ(ProcessCandidate::deadline_for(10s, 1024), 40s);
-  EXPECT_EQ(ProcessCandidate::deadline_for(10s, 2048), 160s);
-  EXPECT_EQ(ProcessCandidate::deadline_for(10s, 4097), milliseconds(640312));  // 10000 · 64.0312538…
-  EXPECT_EQ(ProcessCandidate::deadline_for(300ms, 1024), 1200ms);
+  const Deadlines ten(10s), short_one(300ms);
+  EXPECT_EQ(ten.for_world(0), 10s);
+  EXPECT_EQ(ten.for_world(512), 10s);
+  EXPECT_EQ(ten.for_world(513), milliseconds(10039));  // 10000 · (513/512)² = 10039.10…
+  EXPECT_EQ(ten.for_world(1024), 40s);
+  EXPECT_EQ(ten.for_world(4097), milliseconds(640312));  // 10000 · 64.0312538…
+  EXPECT_EQ(short_one.for_world(1024), 1200ms);
+}
+
+// After answers, from the largest world answered: kFactor times its time, times (n/m)² above it and n/m below,
+// never less than the floor; the slowest answer to that world counts, and a larger world replaces it.
+TEST(deadlines, after_answers_follow_the_programs_own_speed_with_a_factor_and_a_floor) {
+  using std::chrono::milliseconds;
+  Deadlines d(1s);
+  d.answered(100, 0.25s);
+  EXPECT_EQ(d.for_world(100), 5s);
+  EXPECT_EQ(d.for_world(200), 20s);
+  EXPECT_EQ(d.for_world(50), 2500ms);
+  EXPECT_EQ(d.for_world(2), 1s);  // the floor
+  d.answered(100, 0.1s);          // a faster answer to the same size: the slowest still counts
+  EXPECT_EQ(d.for_world(100), 5s);
+  d.answered(400, 0.1s);          // a larger world: its time is the measure now
+  EXPECT_EQ(d.for_world(800), 8s);
+  EXPECT_EQ(d.for_world(10), 1s);
+  d.answered(0, 100s);            // an empty world tells nothing
+  EXPECT_EQ(d.for_world(800), 8s);
+  // The floor grows as the square root of the circles beyond 512: 4 times at 8192.
+  d.answered(8192, 0.001s);
+  EXPECT_EQ(d.for_world(8192), 4s);
 }
 
 // Programs that break the protocol: each is refused with what it did, and nothing of it outlives the check.

@@ -58,6 +58,7 @@ ConformCommandOptions double_engine() {
   options.engine_given = true;
   options.threads = 1;
   options.cases = 25;
+  options.cases_given = true;
   options.seed = 2;
   return options;
 }
@@ -67,6 +68,7 @@ ConformCommandOptions silent_program() {
   ConformCommandOptions options;
   options.exec = "true";
   options.cases = 25;
+  options.cases_given = true;
   options.seed = 2;
   return options;
 }

@@ -43,8 +43,11 @@ exits_2_for_a_program_that_hangs)
   run_conform 2 --cases 5 --timeout 0.2 --exec 'sleep 30'
   ;;
 rejects_a_gallery_entry_with_exit_1)
-  # ARGS: GALLERY_CANDIDATE ENTRY. Default options (a random seed, printed in the report).
-  run_conform 1 --exec "$1 $2"
+  # ARGS: GALLERY_CANDIDATE ENTRY [OPTIONS...]. Default options (a random seed, printed in the report) but OPTIONS.
+  gallery=$1
+  entry=$2
+  shift 2
+  run_conform 1 --exec "$gallery $entry" "$@"
   ;;
 gallery_candidate_exits_2_listing_the_entries_for_an_unknown_name)
   # ARGS: GALLERY_CANDIDATE.
@@ -83,7 +86,7 @@ saves_a_counterexample_and_replays_it_first)
   grep -q "^saved: $saved\$" "$dir/out" || fail "the report does not name $saved: $(cat "$dir/out")"
   run_conform 1 --seed 4 --cases 0 --save "$dir/corpus" --exec "$naive"
   grep -q "^counterexample: stored in $saved, replayed first" "$dir/out" || fail "not replayed: $(cat "$dir/out")"
-  run_conform 0 --seed 4 --save "$dir/corpus" --exec "python3 $source_dir/examples/python/step.py"
+  run_conform 0 --seed 4 --budget 20 --save "$dir/corpus" --exec "python3 $source_dir/examples/python/step.py"
   grep -q "corpus: 1 stored counterexample replayed from $dir/corpus" "$dir/out" || fail "$(cat "$dir/out")"
   ;;
 draws_the_picture_where_svg_says)
@@ -172,6 +175,44 @@ exits_2_for_a_count_beyond_2_63_or_threads_with_a_program)
   run_conform 2 --threads 2 --exec "python3 $source_dir/examples/python/step.py"
   [ "$(cat "$dir/err")" = "circles conform: --threads sets the threads of an --engine; a program given with --exec runs its own" ] ||
     fail "unexpected message: $(cat "$dir/err")"
+  ;;
+gives_a_slow_program_the_time_its_speed_needs_and_stops_one_that_hangs)
+  # tests/slow_candidate.py answers right after 10 ms a circle: its worlds of 100 or more circles (index-bits has
+  # 272 to 320) take longer than the 1 s floor, and the deadlines its earlier answers predict give them that time.
+  # The same program hanging after 10 answers is stopped.
+  slow="python3 $source_dir/tests/slow_candidate.py $circles 0.01"
+  run_conform 0 --cases 25 --seed 1 --timeout 1 --jobs 1 --exec "$slow"
+  run_conform 1 --cases 25 --seed 1 --timeout 1 --jobs 1 --exec "$slow 10"
+  grep -q "^  step 1 of 1: no answer: the program hung$" "$dir/out" || fail "$(cat "$dir/out" "$dir/err")"
+  grep -q "gave no answer to request 11 within " "$dir/out" || fail "$(cat "$dir/out" "$dir/err")"
+  ;;
+reports_a_crash_and_a_malformed_line_on_a_world_as_counterexamples_and_logs_every_line)
+  # tests/faulty_candidate.cpp, right on worlds of up to 6 circles, breaks on one of 7 or more: a counterexample,
+  # exit 1, shrunk to a world of 7 circles on which it breaks the same way, with its replay line, which
+  # reproduces it; breaking on the first world asked, before any answer, it cannot be checked, exit 2. --log
+  # holds every request sent and answer read, each line marked with its copy of the program.
+  faulty=$1
+  for mode in abort garble; do
+    case $mode in
+    abort) kind="crashed or exited" ;;
+    garble) kind="wrote a malformed answer" ;;
+    esac
+    run_conform 1 --seed 2 --budget 5 --exec "$faulty $mode 7" --log "$dir/log"
+    grep -q "^  step 1 of 1: no answer: the program $kind$" "$dir/out" || fail "$mode: $(cat "$dir/out")"
+    [ "$(grep -c '^    #' "$dir/out")" -eq 14 ] || fail "$mode: not shrunk to 7 circles: $(cat "$dir/out")"
+    grep -q "^counterexample: case [0-9]* of seed 2 (family [a-z-]*), shrunk from" "$dir/out" || fail "$(cat "$dir/out")"
+    replay=$(sed -n 's/^replay: //p' "$dir/out")
+    cp "$dir/out" "$dir/first"
+    (PATH="$(dirname "$circles"):$PATH" && export PATH && eval "$replay" >"$dir/out" 2>"$dir/err") &&
+      fail "$mode: the replay line conforms" || true
+    [ "$(grep '^    #\|^  step' "$dir/out")" = "$(grep '^    #\|^  step' "$dir/first")" ] ||
+      fail "$mode: the replay differs: $(cat "$dir/out")"
+    grep -q '^1> {"id":1,"circles":' "$dir/log" && grep -q '^[0-9]< {"id":' "$dir/log" ||
+      fail "$mode: the log: $(head -c 600 "$dir/log")"
+  done
+  run_conform 2 --seed 2 --budget 5 --exec "$faulty abort 0"
+  grep -q "^circles conform: the program \`$faulty abort 0\` exited with status 134 before answering request 1 " "$dir/err" ||
+    fail "$(cat "$dir/err")"
   ;;
 keeps_going_and_gates_on_an_expectation_file)
   # The naive example's two mistakes (hypot distance, p + v*(1/60)) reach every family but tangent-after-step,

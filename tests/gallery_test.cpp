@@ -62,7 +62,7 @@ TEST(gallery, the_step_with_no_mistake_conforms) {
   EXPECT_EQ(v.outcome, Outcome::conforms) << v.error;
 }
 
-// The gallery_program and scale_gallery_program ctests (tests/CMakeLists.txt) run `circles conform` on
+// The gallery_program, scale_gallery_program and swarm_gallery_program ctests (tests/CMakeLists.txt) run `circles conform` on
 // gallery_candidate NAME for each name of their own list, which must be the gallery's and the scale gallery's,
 // name for name: an entry added here and not there would go unchecked through the program.
 // The names the gallery_ctests(PREFIX …) call of tests/CMakeLists.txt lists.
@@ -88,6 +88,11 @@ TEST(gallery, every_entry_runs_through_the_program_as_a_ctest_of_its_own) {
   for (const testing::ScaleEntry& e : testing::scale_gallery()) scale.insert(e.name);
   EXPECT_EQ(ctest_names("scale_gallery_program"), scale);
   EXPECT_EQ(scale.size(), testing::scale_gallery().size()) << "two scale entries share a name";
+  std::set<std::string> swarm;
+  for (const testing::ScaleEntry& e : testing::swarm_gallery()) swarm.insert(e.name);
+  EXPECT_EQ(ctest_names("swarm_gallery_program"), swarm);
+  EXPECT_EQ(swarm.size(), testing::swarm_gallery().size()) << "two swarm entries share a name";
+  EXPECT_GE(swarm.size(), 10u);
 }
 
 // Each counterexample is also saved, and the saved world still catches the mistake. With the environment

@@ -37,11 +37,12 @@ Looks all_pairs(std::size_t n) {
 // A uniform grid: each circle in the cell of its centre (a cell keeps its first `capacity` circles, 0: all),
 // each circle looking at the 3 × 3 cells around its own. Cells of side 2·kCellMargin·(the largest radius of the
 // first `sample` circles, 0: of all). All pairs where the grid cannot hold the centres.
-Looks grid(const Circles& w, std::size_t sample, std::size_t capacity) {
+Looks grid(const Circles& w, std::size_t sample, std::size_t capacity, bool pow2_cell) {
   const std::size_t n = w.size();
   double largest = 0;
   for (std::size_t k = 0; k < (sample ? std::min(sample, n) : n); ++k) largest = std::max(largest, w[k][4]);
   double h = 2 * kCellMargin * largest;
+  if (pow2_cell && h > 0) h = std::ldexp(1.0, std::ilogb(h));
   if (!(h > 0)) h = 1;
   if (!std::isfinite(h)) return all_pairs(n);
   std::vector<std::pair<std::int64_t, std::int64_t>> cell(n);
@@ -115,13 +116,36 @@ Looks strips(const Circles& w, std::size_t count) {
   return looks;
 }
 
-// Whether circle a precedes circle b: lexicographic on (px, py, vx, vy, r), exactly (−0 == +0), then by index.
-bool precedes(const Circles& w, std::size_t a, std::size_t b) {
-  for (std::size_t f = 0; f < 5; ++f) {
+// Whether circle a precedes circle b: lexicographic on (px, py, vx, vy, r), exactly (−0 == +0), then by index
+// (on (px, py) only with `position`).
+bool precedes(const Circles& w, std::size_t a, std::size_t b, bool position = false) {
+  for (std::size_t f = 0; f < (position ? 2 : 5); ++f) {
     if (w[a][f] < w[b][f]) return true;
     if (w[b][f] < w[a][f]) return false;
   }
   return a < b;
+}
+
+// Whether circles a and b touch, as the step with `bugs` decides it: exactly (impl::intersect_exact), unless a
+// bug decides first.
+bool touches(const CircleDoubles& a, const CircleDoubles& b, const ScaleBugs& bugs) {
+  if (bugs.skip_zero_radius && (a[4] == 0 || b[4] == 0)) return false;
+  if (bugs.skip_same_centre && a[0] == b[0] && a[1] == b[1]) return false;
+  const double dx = b[0] - a[0], dy = b[1] - a[1], s = a[4] + b[4];
+  const double d2 = dx * dx + dy * dy, s2 = s * s;
+  if (bugs.approx_tangent && std::isfinite(d2) && std::isfinite(s2)) return d2 <= s2 * (1 + 0x1p-50);
+  if (bugs.float32_filter) {
+    const float fx = static_cast<float>(b[0]) - static_cast<float>(a[0]);
+    const float fy = static_cast<float>(b[1]) - static_cast<float>(a[1]);
+    const float fs = static_cast<float>(a[4]) + static_cast<float>(b[4]);
+    if (std::isfinite(fx * fx + fy * fy) && fx * fx + fy * fy > fs * fs) return false;
+  }
+  if (bugs.filter_bound > 0 && std::isfinite(d2) && std::isfinite(s2) && std::isnormal(s2)) {
+    const double bound = bugs.filter_bound * (d2 + s2);
+    if (d2 - s2 > bound) return false;
+    if (s2 - d2 > bound) return true;
+  }
+  return impl::intersect_exact(a[0], a[1], a[4], b[0], b[1], b[4]);
 }
 
 // Circle i's image: the velocity of its least contact among looks (the first `slots` contacts in index order,
@@ -131,18 +155,22 @@ CircleDoubles image(const Circles& w, std::size_t i, std::vector<std::size_t> lo
   looks.erase(std::unique(looks.begin(), looks.end()), looks.end());
   std::vector<std::size_t> contacts;
   for (const std::size_t j : looks)
-    if (impl::intersect_exact(w[i][0], w[i][1], w[i][4], w[j][0], w[j][1], w[j][4])) contacts.push_back(j);
+    if (touches(w[i], w[j], bugs)) contacts.push_back(j);
   if (bugs.contact_slots && contacts.size() > bugs.contact_slots) contacts.resize(bugs.contact_slots);
   const std::size_t mask = bugs.index_bits ? (std::size_t{1} << bugs.index_bits) - 1 : ~std::size_t{0};
   std::size_t least = i;
   bool any = false;
   for (const std::size_t j : contacts)
-    if (!any || precedes(w, j, least)) {
+    if (!any || precedes(w, j, least, bugs.position_order)) {
       least = j & mask;
       any = true;
     }
   const double vx = w[least][2], vy = w[least][3];
-  return {impl::advance_rounded(w[i][0], vx), impl::advance_rounded(w[i][1], vy), vx, vy, w[i][4]};
+  CircleDoubles out{impl::advance_rounded(w[i][0], vx), impl::advance_rounded(w[i][1], vy), vx, vy, w[i][4]};
+  if (bugs.flush_subnormal)
+    for (const std::size_t f : {0, 1})
+      if (std::fabs(out[f]) < std::numeric_limits<double>::min()) out[f] = 0;
+  return out;
 }
 
 Looks candidates(const Circles& w, const ScaleBugs& bugs, ScaleState& state) {
@@ -153,9 +181,23 @@ Looks candidates(const Circles& w, const ScaleBugs& bugs, ScaleState& state) {
   }
   Looks looks = bugs.strips ? strips(w, bugs.strips)
                 : bugs.broad == ScaleBugs::Broad::sweep ? sweep(w, bugs.sort_block, bugs.sweep_window)
-                                                        : grid(w, bugs.radius_sample, bugs.cell_capacity);
+                                                        : grid(w, bugs.radius_sample, bugs.cell_capacity, bugs.pow2_cell);
   if (bugs.simd_width)
     for (std::size_t i = w.size() - w.size() % bugs.simd_width; i < w.size(); ++i) looks[i].clear();
+  // Two threads, each its half of the circles (by index, or by y about the median), whose contacts across the
+  // halves are never merged.
+  if ((bugs.index_halves && w.size() > bugs.index_halves) || (bugs.space_halves && w.size() > bugs.space_halves)) {
+    std::vector<bool> upper(w.size());
+    if (bugs.index_halves) {
+      for (std::size_t i = 0; i < w.size(); ++i) upper[i] = i >= w.size() / 2;
+    } else {
+      std::vector<double> ys;
+      for (const CircleDoubles& c : w) ys.push_back(c[1]);
+      std::nth_element(ys.begin(), ys.begin() + static_cast<std::ptrdiff_t>(ys.size() / 2), ys.end());
+      for (std::size_t i = 0; i < w.size(); ++i) upper[i] = w[i][1] >= ys[ys.size() / 2];
+    }
+    for (std::size_t i = 0; i < w.size(); ++i) std::erase_if(looks[i], [&](std::size_t j) { return upper[j] != upper[i]; });
+  }
   if (bugs.keeps_pairs) {
     state.circles = w.size();
     state.pairs.clear();
@@ -210,11 +252,29 @@ const std::vector<ScaleEntry>& scale_gallery() {
   return entries;
 }
 
+const std::vector<ScaleEntry>& swarm_gallery() {
+  static const std::vector<ScaleEntry> entries{
+      {"pow2-cell", "rounds its grid's cell side down to a power of two", {.pow2_cell = true}, 65},
+      {"tight-filter", "decides a pair in doubles unless within 10^-18 of tangency, 100 times too tight",
+       {.filter_bound = 1e-18}, 65},
+      {"approx-tangent", "takes d^2 <= (r_a + r_b)^2 (1 + 2^-50), in doubles, for touching", {.approx_tangent = true}, 65},
+      {"float32-filter", "drops a pair that float32 arithmetic puts apart", {.float32_filter = true}, 65},
+      {"zero-radius-skip", "leaves circles of radius 0 out of its broad phase", {.skip_zero_radius = true}, 65},
+      {"same-centre-skip", "takes a circle at the same centre for the circle itself", {.skip_same_centre = true}, 65},
+      {"position-order", "orders contacts by position alone, not velocity and radius", {.position_order = true}, 65},
+      {"flush-subnormal", "writes a next position below DBL_MIN as 0", {.flush_subnormal = true}, 65},
+      {"index-halves", "above 5000 circles, two threads by index never merged", {.index_halves = 5000}, 5001},
+      {"space-halves", "above 8000 circles, two threads by y never merged", {.space_halves = 8000}, 8001},
+  };
+  return entries;
+}
+
 const ScaleEntry* find_scale_entry(std::string_view name) {
   static const ScaleEntry optimized{"optimized", "the correct optimized step", {}, 0};
   if (name == optimized.name) return &optimized;
-  for (const ScaleEntry& e : scale_gallery())
-    if (e.name == name) return &e;
+  for (const auto* gallery : {&scale_gallery(), &swarm_gallery()})
+    for (const ScaleEntry& e : *gallery)
+      if (e.name == name) return &e;
   return nullptr;
 }
 

@@ -35,6 +35,17 @@ struct ScaleBugs {
   std::size_t sweep_window = 0;    // the sweep looks at most N circles ahead in x order
   std::size_t simd_width = 0;      // circles go in blocks of N; the last, partial block looks for no contact
   bool keeps_pairs = false;        // the candidate pairs of the last request are kept when the count matches
+  // Kinds of bug that no named big family aims at, which the swarm's worlds must catch (swarm_gallery):
+  bool pow2_cell = false;          // the grid's cell side rounded down to a power of two
+  double filter_bound = 0;         // d² − (r_a + r_b)² in doubles decides a pair unless within this relative bound
+  bool approx_tangent = false;     // a pair touches when d² <= (r_a + r_b)²·(1 + 2^-50), in doubles, no exact test
+  bool float32_filter = false;     // a pair is dropped when float32 arithmetic says it is apart
+  bool skip_zero_radius = false;   // circles of radius 0 are left out of the broad phase
+  bool skip_same_centre = false;   // a circle at the same centre is taken for the circle itself
+  bool position_order = false;     // the least contact by (px, py) and index only, not by velocity and radius
+  bool flush_subnormal = false;    // a next position below DBL_MIN is written 0
+  std::size_t index_halves = 0;    // above N circles, two threads by index whose contacts are never merged
+  std::size_t space_halves = 0;    // above N circles, two threads by y (below and above the median), never merged
 };
 
 // What a step over the protocol keeps from one request to the next (ScaleBugs::keeps_pairs).
@@ -55,10 +66,15 @@ struct ScaleEntry {
   std::size_t needs;
 };
 
-// Every wrong optimized step.
+// Every wrong optimized step whose kind a named big family aims at.
 const std::vector<ScaleEntry>& scale_gallery();
 
-// The entry called `name`, or the correct optimized step for "optimized"; nullptr for any other name.
+// Wrong optimized steps of kinds no named family aims at: the swarm's worlds (properties/detail/swarm.cpp) on a
+// budget run's ladder must catch each (tests/scale_gallery_test.cpp).
+const std::vector<ScaleEntry>& swarm_gallery();
+
+// The entry called `name` of either gallery, or the correct optimized step for "optimized"; nullptr for any other
+// name.
 const ScaleEntry* find_scale_entry(std::string_view name);
 
 }  // namespace circles::testing

@@ -64,10 +64,11 @@ TEST(scale_gallery, no_entry_fails_on_the_small_families) {
   std::vector<properties::Family> big;
   for (const properties::Family f : properties::families(Profile::resolved))
     if (properties::is_big(f)) big.push_back(f);
-  for (const ScaleEntry& entry : testing::scale_gallery()) {
-    const Verdict v = verdict(entry, 1, big);
-    EXPECT_EQ(v.outcome, Outcome::conforms) << entry.name;
-  }
+  for (const auto* gallery : {&testing::scale_gallery(), &testing::swarm_gallery()})
+    for (const ScaleEntry& entry : *gallery) {
+      const Verdict v = verdict(entry, 1, big);
+      EXPECT_EQ(v.outcome, Outcome::conforms) << entry.name;
+    }
 }
 
 }  // namespace

@@ -7,7 +7,8 @@
 // order is part of each construction (where the least contact sits, which circles come last), so that, unlike
 // the small families, a big world is not shuffled. Draws come from the case's own rc::Random, in statement
 // order, so that a seed gives the same world on every compiler.
-#include "properties/boundaries.hpp"
+#include "properties/detail/boundaries.hpp"
+#include "properties/detail/draw.hpp"
 
 #include <algorithm>
 #include <array>
@@ -19,29 +20,11 @@
 #include <utility>
 #include <vector>
 
-namespace circles::properties::gen {
-namespace {
+namespace circles::properties::detail {
 
 using spec::CircleDoubles;
-using I = std::int64_t;
 
-// The case's random stream.
-class Draw {
- public:
-  explicit Draw(rc::Random random) : random_(std::move(random)) {}
-  // Uniform in [0, n), n > 0 (the modulo's bias, below 2^-40 for n < 2^24, does not matter here).
-  std::uint64_t below(std::uint64_t n) { return random_.next() % n; }
-  I between(I lo, I hi) { return lo + static_cast<I>(below(static_cast<std::uint64_t>(hi - lo + 1))); }
-  // A quarter in [-60, 60]: up to one unit of movement per step.
-  double velocity() { return static_cast<double>(between(-240, 240)) / 4; }
-  template <class T>
-  void shuffle(std::vector<T>& items) {
-    for (std::size_t k = items.size(); k > 1; --k) std::swap(items[k - 1], items[below(k)]);
-  }
-
- private:
-  rc::Random random_;
-};
+namespace {
 
 // A circle whose vy differs from that of the 4094 circles made before and after it, and from those 2^8 and 2^16
 // before and after it (the k-th circle made gets vy = (k mod 4095)/8 − 256 shifted by a per-world offset), so
@@ -60,16 +43,6 @@ class Builder {
   double offset_;
   std::uint64_t made_ = 0;
 };
-
-// The round-th case's level among `levels` (0 … levels − 1): the first `levels` rounds go up one level each,
-// so that a run of that many rounds has reached the largest; after them the ruler sequence 0, 1, 0, 2, 0, 1, 0,
-// 3, … (the number of trailing zero bits of the round counted from there), so that a level's worlds come half
-// as often as the level below's, and a long run's time stays dominated by its first cases.
-std::size_t level(std::uint64_t round, std::size_t levels) {
-  if (levels == 0) return 0;
-  if (round < levels) return static_cast<std::size_t>(round);
-  return std::min<std::size_t>(levels - 1, static_cast<std::size_t>(std::countr_zero(round - levels + 1)));
-}
 
 // The values of `table` up to `max`, at least the first.
 template <std::size_t N>
@@ -99,13 +72,17 @@ Circles random_world(std::size_t n, Draw& draw) {
   return w;
 }
 
+}  // namespace
+
 // sizes: a world that crosses a power of two p: p + 1, p − 1 or p circles; above the largest p with p + 1 <= max,
-// a last level of max circles itself when max is more, so that the limit is reached.
+// a last level of max circles itself when max is more, so that the limit is reached. On the ladder (a budget
+// run), the swarm's world of max circles (detail/swarm.cpp), whose size is a rung: a power of two or the limit.
 Circles sizes(std::uint64_t round, std::size_t max, Draw& draw) {
   std::size_t powers = 0;  // the powers of two p = 16 · 2^l with p + 1 <= max
   while ((std::size_t{16} << powers) + 1 <= max) ++powers;
   const bool limit = (std::size_t{16} << (powers - 1)) + 1 < max;
-  const std::size_t l = level(round, powers + limit);
+  const std::size_t l = draw.level(round, powers + limit);
+  if (draw.largest()) return swarm(max, draw);  // a ladder's world: the swarm's
   if (l == powers) return random_world(max, draw);
   const std::size_t p = std::size_t{16} << l;
   const std::size_t side = round < powers + limit ? 1 : static_cast<std::size_t>(round % 3);  // +1, then −1, 0, +1, …
@@ -118,7 +95,7 @@ Circles sizes(std::uint64_t round, std::size_t max, Draw& draw) {
 // ranks spread over the rest.
 Circles crowds(std::uint64_t round, std::size_t max, Draw& draw) {
   static constexpr std::array<std::size_t, 8> kContacts{9, 12, 17, 33, 65, 100, 129, 257};
-  const std::size_t m = kContacts[level(round, levels_up_to(kContacts, max / 3))];
+  const std::size_t m = kContacts[draw.level(round, levels_up_to(kContacts, max / 3))];
   const std::size_t hubs = std::clamp<std::size_t>(std::min<std::size_t>(512, max) / (m + 1), 3, 16);
   // The contacts: distinct integer points of a k × k square around the hub's centre, radius 1/4, so that two
   // contacts (at least 1 apart) never touch; the hub's radius k + 1 reaches every one of them.
@@ -158,7 +135,7 @@ Circles crowds(std::uint64_t round, std::size_t max, Draw& draw) {
 // it a cell of m/4 such centres, and scattered circles of the same radius elsewhere.
 Circles cell_crowds(std::uint64_t round, std::size_t max, Draw& draw) {
   static constexpr std::array<std::size_t, 9> kCentres{5, 9, 17, 33, 65, 129, 257, 513, 1000};
-  const std::size_t m = kCentres[level(round, levels_up_to(kCentres, max / 2))];
+  const std::size_t m = kCentres[draw.level(round, levels_up_to(kCentres, max / 2))];
   const int e = static_cast<int>(draw.between(-4, 8));
   const double s = std::ldexp(1.0, e);
   const I q = static_cast<I>(std::ceil(std::sqrt(static_cast<double>(m))));
@@ -187,7 +164,7 @@ Circles cell_crowds(std::uint64_t round, std::size_t max, Draw& draw) {
 // least contact it then is (its px is far smaller); one reaching from the right touches a sliver.
 Circles radius_spread(std::uint64_t round, std::size_t max, Draw& draw) {
   static constexpr std::array<std::size_t, 5> kCircles{64, 128, 256, 512, 1024};
-  const std::size_t l = level(round, levels_up_to(kCircles, max));
+  const std::size_t l = draw.level(round, levels_up_to(kCircles, max));
   const std::size_t n = kCircles[l], big = 2 + l;
   const I side = 4 * static_cast<I>(std::ceil(std::sqrt(static_cast<double>(n))));
   Builder make(draw);
@@ -213,7 +190,7 @@ Circles radius_spread(std::uint64_t round, std::size_t max, Draw& draw) {
 Circles long_rows(std::uint64_t round, std::size_t max, Draw& draw) {
   static constexpr std::array<std::size_t, 5> kWidth{128, 256, 512, 1024, 2048};
   const std::size_t rows = 1 + round % 2;
-  const std::size_t width = kWidth[level(round, levels_up_to(kWidth, max / 2 / rows))];
+  const std::size_t width = kWidth[draw.level(round, levels_up_to(kWidth, max / 2 / rows))];
   const bool transposed = (round / 2) % 2 == 1;
   const double d = std::ldexp(1.0, static_cast<int>(draw.between(-4, 4)));
   const double along = static_cast<double>(draw.between(-(I{1} << 20), I{1} << 20)) * d;
@@ -237,7 +214,7 @@ Circles index_bits(std::uint64_t round, std::size_t max, Draw& draw) {
   static constexpr std::array<std::size_t, 2> kBits{8, 16};
   std::size_t fits = 0;
   while (fits < kBits.size() && (std::size_t{1} << kBits[fits]) + 64 <= max) ++fits;
-  const std::size_t bits = kBits[fits == 0 ? 0 : level(round, fits)];
+  const std::size_t bits = kBits[fits == 0 ? 0 : draw.level(round, fits)];
   const std::size_t low = std::size_t{1} << bits;
   const std::size_t n = std::min(max, low + 16 + static_cast<std::size_t>(draw.below(48)));
   const I columns = static_cast<I>(std::ceil(std::sqrt(static_cast<double>(n))));
@@ -271,7 +248,7 @@ Circles index_bits(std::uint64_t round, std::size_t max, Draw& draw) {
 // indices in no order.
 Circles order_borders(std::uint64_t round, std::size_t max, Draw& draw) {
   static constexpr std::array<std::size_t, 5> kCircles{64, 128, 256, 512, 1024};
-  const std::size_t n = kCircles[level(round, levels_up_to(kCircles, max - 8))] + static_cast<std::size_t>(draw.below(8));
+  const std::size_t n = kCircles[draw.level(round, levels_up_to(kCircles, max - 8))] + static_cast<std::size_t>(draw.below(8));
   std::vector<bool> touch(n - 1);
   for (std::size_t t = 0; t + 1 < n; ++t) touch[t] = draw.below(2) == 0;
   std::vector<std::size_t> borders;
@@ -305,29 +282,22 @@ Circles order_borders(std::uint64_t round, std::size_t max, Draw& draw) {
   return w;
 }
 
-// big_chains: random_world at 64 … 512 circles, moving up to one unit a step, chained 3 steps.
+// big_chains: random_world at 64 … 512 circles, moving up to one unit a step, chained 3 steps; on the ladder, the
+// swarm's worlds, chained so.
 Circles big_chains(std::uint64_t round, std::size_t max, Draw& draw) {
+  if (draw.largest()) return swarm(max, draw);
   static constexpr std::array<std::size_t, 4> kCircles{64, 128, 256, 512};
-  return random_world(kCircles[level(round, levels_up_to(kCircles, max))], draw);
+  return random_world(kCircles[draw.level(round, levels_up_to(kCircles, max))], draw);
 }
 
-}  // namespace
+}  // namespace circles::properties::detail
 
-Circles big_world(Family family, std::uint64_t round, std::size_t max_circles, rc::Random random) {
-  Draw draw(std::move(random));
-  const std::size_t max = std::max(max_circles, kMinMaxCircles);
-  switch (family) {
-    case Family::sizes: return sizes(round, max, draw);
-    case Family::crowds: return crowds(round, max, draw);
-    case Family::cell_crowds: return cell_crowds(round, max, draw);
-    case Family::radius_spread: return radius_spread(round, max, draw);
-    case Family::long_rows: return long_rows(round, max, draw);
-    case Family::index_bits: return index_bits(round, max, draw);
-    case Family::order_borders: return order_borders(round, max, draw);
-    case Family::big_chains: return big_chains(round, max, draw);
-    default: break;
-  }
-  return {};
+namespace circles::properties::gen {
+
+Circles big_world(Family family, std::uint64_t round, std::size_t max_circles, rc::Random random, bool largest) {
+  if (!row(family).build_big) return {};
+  detail::Draw draw(std::move(random), largest);
+  return row(family).build_big(round, std::max(max_circles, kMinMaxCircles), draw);
 }
 
 }  // namespace circles::properties::gen

@@ -174,6 +174,8 @@ void below(CircleDoubles& a, CircleDoubles& b, std::size_t f) {
   if (a[f] == b[f]) b[f] = std::nextafter(b[f], inf);
 }
 
+}  // namespace
+
 // ── The families ──────────────────────────────────────────────────────────────────────────────────────
 
 Circles tangency(bool positive) {
@@ -378,7 +380,7 @@ Circles signed_zeros(bool positive) {
 // A circle of radius c scales and a point (r = ±0) on its boundary at (a, b) scales from its centre, exactly;
 // then one of: nothing, a second point at the same place (the two touch: 0 <= 0 + 0), the point moved by 1 … 3
 // ulps (just inside or outside), or a point at the circle's centre.
-Circles zero_radius() {
+Circles zero_radius(bool) {
   const Grid g = grid(-1074, 1000);
   const I s = g.scale();
   const Triple t = triple(true);
@@ -426,35 +428,6 @@ Circles random_doubles(bool positive) {
     for (CircleDoubles& c : w)
       if (c[r] == 0) c[r] = std::numeric_limits<double>::denorm_min();
   return w;
-}
-
-}  // namespace
-
-rc::Gen<Circles> family_world(Family family, Profile profile) {
-  return rc::gen::exec([family, profile] {
-    const bool literal = profile == Profile::literal;
-    switch (family) {
-      case Family::lattice: return lattice(literal);
-      case Family::random_doubles: return random_doubles(literal);
-      case Family::tangency: return tangency(literal);
-      case Family::ulp_nudge: return ulp_nudge(literal);
-      case Family::tie_px: return ties(1, literal);
-      case Family::tie_p: return ties(2, literal);
-      case Family::tie_p_vx: return ties(3, literal);
-      case Family::tie_p_v: return ties(4, literal);
-      case Family::duplicates: return ties(5, literal);
-      case Family::incomparable: return incomparable(literal);
-      case Family::mutual_contacts: return mutual_contacts(literal);
-      case Family::tangent_after_step: return tangent_after_step(literal);
-      case Family::square_overflow: return square_overflow(literal);
-      case Family::subnormals: return subnormals(literal);
-      case Family::cancellation: return cancellation(literal);
-      case Family::signed_zeros: return signed_zeros(literal);
-      case Family::zero_radius: return zero_radius();
-      default: break;  // the big families are built by gen::big_world
-    }
-    return Circles{};
-  });
 }
 
 }  // namespace circles::properties::detail

@@ -1,0 +1,41 @@
+// The deadline of each answer of a program under check, predicted from its own earlier answers
+// (docs/conform.md, "Deadlines"): a slow program is given the time its speed needs, and one that hangs is still
+// stopped.
+//
+// The rule: before any answer, `floor` up to kFirstCircles circles and floor · (n / kFirstCircles)² above, as an
+// O(n²) step's time grows. After answers, with t the longest time taken by an answer to the largest world
+// answered so far, of m circles: kFactor · t · (n/m)² for a world of n >= m circles (the growth of a step that
+// tests every pair), kFactor · t · n/m for n < m; never less than `floor` · sqrt(n / kFirstCircles) (and `floor`). An answer's time is measured from its
+// request's write, or from the previous answer when requests are batched. The copies of a program (--jobs) share
+// one model, the same program's speed.
+#pragma once
+
+#include <chrono>
+#include <cstddef>
+#include <mutex>
+
+namespace circles::conform {
+
+class Deadlines {
+ public:
+  explicit Deadlines(std::chrono::milliseconds floor) : floor_(floor) {}
+
+  // The deadline of the answer to a world of `circles` circles.
+  std::chrono::milliseconds for_world(std::size_t circles) const;
+  // Records that the answer to a world of `circles` circles took `took`.
+  void answered(std::size_t circles, std::chrono::duration<double> took);
+
+  // How many times the predicted time an answer is given: room for a machine whose load changes while it runs,
+  // for a garbage collector's pause, for a step whose time varies with the world's layout.
+  static constexpr double kFactor = 20;
+  // Before any answer, worlds up to this size get the floor.
+  static constexpr std::size_t kFirstCircles = 512;
+
+ private:
+  std::chrono::milliseconds floor_;
+  mutable std::mutex mutex_;
+  std::size_t largest_ = 0;  // m: the most circles of a world answered
+  double seconds_ = 0;       // t: the longest time an answer to a world of m circles took
+};
+
+}  // namespace circles::conform
