@@ -201,8 +201,8 @@ CLI::App* add_conform_command(CLI::App& app, ConformCommandOptions& options) {
       "--svg", options.svg, "Draw a counterexample's picture in FILE (default: beside it in --save DIR, else none)"));
   takes_number(conform
                    ->add_option("--timeout", options.timeout,
-                                "Seconds to wait for each answer, up to 512 circles; (n/512)^2 times as long for n "
-                                "circles above")
+                                "The least seconds to wait for an answer; the deadline otherwise follows the "
+                                "program's measured speed (conform.md in the docs, Deadlines)")
                    ->capture_default_str(),
                "SECONDS", "a number from 0.001 to 3600", [](double x) { return x >= 0.001 && x <= 3600; });
   takes_whole_number(conform
