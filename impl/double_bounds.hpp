@@ -95,6 +95,8 @@ inline constexpr double kTinyLimit = 0x1p-1021;
 //                   left out) drops such a pair (tests/pair_list_test.cpp).
 //   kDriftAbsolute = 0x1p-1073 ≥ 2·√2·2^-1075.
 //   far           = reach + H·vmax·kSpeedBound, reach = the largest |coordinate| of world t.
+// proofs/gappa/step_bound.g proves step_bound's result covers the step, and skin_for's the H steps, at every vmax
+// and reach up to 2^1000, H ≤ 2^16, subnormals included, and refuses each of the three constants lowered to its mutant.
 // The exact engine's moves are exact (X ← X + V): its skin is the speed term alone, on its own vmax.
 inline constexpr double kSpeedBound = 0x1.11111111112p-6;
 inline constexpr double kDriftBound = 0x1.6a1p-53;
