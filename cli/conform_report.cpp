@@ -154,9 +154,10 @@ std::string how_far(const Verdict& v) {
     for (std::size_t at = digits.size(); at > 3; at -= 3) digits.insert(at - 3, ",");
     return digits;
   };
-  char seconds[64];
-  std::snprintf(seconds, sizeof seconds, "%.0f s of %g", v.elapsed.count(), *v.options.budget);
-  return (v.largest_world ? "big worlds up to " + grouped(v.largest_world) + " circles, " : std::string()) + seconds;
+  char elapsed[32];
+  std::snprintf(elapsed, sizeof elapsed, "%.0f", v.elapsed.count());
+  return (v.largest_world ? "big worlds up to " + grouped(v.largest_world) + " circles, " : std::string()) + elapsed +
+         " s of " + json_number::plain(*v.options.budget);
 }
 
 // The first line of a run's verdict without a counterexample, or of its --keep-going table: "circles conform:

@@ -87,10 +87,7 @@ std::string system_error(const char* what) { return std::string(what) + ": " + s
 
 // "10 s", "0.25 s": the deadline in the shortest decimal form.
 std::string seconds(std::chrono::milliseconds deadline) {
-  std::string text;
-  json_number::append(text, std::chrono::duration<double>(deadline).count());
-  if (text.ends_with(".0")) text.resize(text.size() - 2);
-  return text + " s";
+  return json_number::plain(std::chrono::duration<double>(deadline).count()) + " s";
 }
 
 }  // namespace

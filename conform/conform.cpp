@@ -664,15 +664,11 @@ Verdict check(Candidate& candidate, const Options& options) {
   bool could_check = true;
   try {
     Run(candidate, options, verdict)();
-  } catch (const Interrupted& e) {
-    verdict.signal = e.signal();
-    verdict.error = e.what();
+  } catch (const Interrupted&) {
+    // Recorded below, with a signal that came while a counterexample was shrunk.
   } catch (const BrokenCandidate& e) {
     // A fault that a signal caused (interrupt() killed the program) is the interruption, not the program's.
-    if (const int signal = interruption()) {
-      verdict.signal = signal;
-      verdict.error = Interrupted(signal).what();
-    } else {
+    if (!interruption()) {
       could_check = false;
       verdict.error = e.what();
     }
@@ -683,8 +679,9 @@ Verdict check(Candidate& candidate, const Options& options) {
     could_check = false;
     verdict.error = std::string("conform drew a world its reference refuses: ") + e.what();
   }
-  // A signal while a counterexample was shrunk ends the shrinking, not the run: the run is interrupted all the same.
-  if (const int signal = interruption(); signal && !verdict.signal) {
+  // A signal ends the run as interrupted, whether it stopped a request, a case, or the shrinking of a
+  // counterexample (which then reports the world shrunk so far).
+  if (const int signal = interruption()) {
     verdict.signal = signal;
     verdict.error = Interrupted(signal).what();
   }

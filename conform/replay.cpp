@@ -78,12 +78,7 @@ std::string rerun_command(std::string_view candidate, const Options& options) {
   // fixed schedule's cases.
   if (options.only_case) add(command, "--case", std::to_string(*options.only_case));
   else if (options.budget) {
-    if (*options.budget != kDefaultBudget) {
-      std::string seconds;  // "90", "0.5"
-      formats::json_number::append(seconds, *options.budget);
-      if (seconds.ends_with(".0")) seconds.resize(seconds.size() - 2);
-      add(command, "--budget", seconds);
-    }
+    if (*options.budget != kDefaultBudget) add(command, "--budget", formats::json_number::plain(*options.budget));
   } else {
     add(command, "--cases", std::to_string(options.cases));
   }

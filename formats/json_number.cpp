@@ -59,6 +59,13 @@ std::string hex(double x) {
   return text;
 }
 
+std::string plain(double x) {
+  std::string text;
+  append(text, x);
+  if (text.ends_with(".0")) text.resize(text.size() - 2);
+  return text;
+}
+
 std::string decimal_and_hex(double x) {
   std::string text;
   append_any(text, x);

@@ -58,6 +58,10 @@ std::optional<double> non_finite_token(std::string_view token);
 // x in C's hexadecimal form ("%a"), which names every double exactly: "0x1.999999999999ap-4".
 std::string hex(double x);
 
+// For messages and command lines: the shortest text that reads back as x, without the ".0" that marks an
+// integer in JSON: "60", "0.5", "1e-05". x must be finite.
+std::string plain(double x);
+
 // For messages: the shortest decimal that reads back as x and its hexadecimal form, "0.1 (0x1.999999999999ap-4)";
 // for a value that is not finite, its token alone: "Infinity".
 std::string decimal_and_hex(double x);
