@@ -157,13 +157,11 @@ Chain rounded_reference(const Circles& w0, std::uint64_t steps) {
       return Chain{{std::move(next)}, std::nullopt};
     });
   return chain_of(w0, steps, [](const Circles& w) {
-    impl::ExactGrid grid(w);
-    try {
+    return one_step([&] {
+      impl::ExactGrid grid(w);
       grid.step();
-    } catch (const impl::PositionOverflow& e) {
-      return Chain{{}, Overflow{e.step, e.index, e.field}};
-    }
-    return Chain{{grid.rounded()}, std::nullopt};
+      return grid.rounded();
+    });
   });
 }
 

@@ -14,26 +14,40 @@
 #include <stdexcept>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 namespace circles::impl {
+
+namespace {
+
+// The finite values of value(k) at `sample` slots k of n spread evenly over them: what plan() takes its median
+// and quantiles from, a speed choice (any plan is correct), so that no plan sorts n values.
+template <class Value>
+std::vector<double> sampled(std::size_t n, std::size_t sample, Value value) {
+  std::vector<double> values;
+  values.reserve(sample);
+  for (std::size_t s = 0; s < sample; ++s)
+    if (const double v = value(s * n / sample); std::isfinite(v)) values.push_back(v);
+  return values;
+}
+
+// The k-th smallest of values (reordering them).
+double kth(std::vector<double>& values, std::size_t k) {
+  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(k), values.end());
+  return values[k];
+}
+
+}  // namespace
 
 void CellGrid::plan(std::span<const double> px, std::span<const double> py, std::span<const double> r) {
   const std::size_t n = px.size();
   if (py.size() != n || r.size() != n) throw std::invalid_argument("CellGrid::plan: px, py and r differ in size");
   // The median width from at most kMedianSample circles spread evenly over the slots: the median only sets
-  // the limit below, a speed choice (any base cell is correct), so no plan sorts n widths.
-  const auto width = [&](std::size_t k) { return outward_upper(px[k], r[k]) - outward_lower(px[k], r[k]); };
+  // the limit below, a speed choice (any base cell is correct).
   const std::size_t sample = std::min(n, kMedianSample);
-  std::vector<double> widths;
-  widths.reserve(sample);
-  for (std::size_t s = 0; s < sample; ++s)
-    if (const double w = width(s * n / sample); std::isfinite(w)) widths.push_back(w);
-  double limit = 0;
-  if (!widths.empty()) {
-    const auto middle = widths.begin() + static_cast<std::ptrdiff_t>(widths.size() / 2);
-    std::nth_element(widths.begin(), middle, widths.end());
-    limit = kWidthSpread * *middle;
-  }
+  std::vector<double> widths =
+      sampled(n, sample, [&](std::size_t k) { return outward_upper(px[k], r[k]) - outward_lower(px[k], r[k]); });
+  const double limit = widths.empty() ? 0 : kWidthSpread * kth(widths, widths.size() / 2);
   // The base cell: the largest width within kWidthSpread medians (0 for an empty world, or one whose sample
   // has no finite width); the extent of the boxes.
   double base = 0;
@@ -61,17 +75,10 @@ void CellGrid::plan(std::span<const double> px, std::span<const double> py, std:
   trimmed_ = false;
   if (std::isfinite(extent) && n > 0) {
     const auto quantiles = [&](std::span<const double> v) {
-      std::vector<double> centres;
-      centres.reserve(sample);
-      for (std::size_t s = 0; s < sample; ++s)
-        if (const double c = v[s * n / sample]; std::isfinite(c)) centres.push_back(c);
+      std::vector<double> centres = sampled(n, sample, [&](std::size_t k) { return v[k]; });
       if (centres.empty()) return std::pair{0.0, 0.0};
-      const auto at = [&](std::size_t k) {
-        std::nth_element(centres.begin(), centres.begin() + static_cast<std::ptrdiff_t>(k), centres.end());
-        return centres[k];
-      };
       const std::size_t trim = static_cast<std::size_t>(static_cast<double>(centres.size()) * kTrim);
-      return std::pair{at(trim), at(centres.size() - 1 - trim)};
+      return std::pair{kth(centres, trim), kth(centres, centres.size() - 1 - trim)};
     };
     const auto [qx0, qx1] = quantiles(px);
     const auto [qy0, qy1] = quantiles(py);
