@@ -147,7 +147,8 @@ void print_families(std::ostream& out, std::span<const conform::FamilyResult> fa
   out << line << "\n";
 }
 
-// How far a budget run went: "big worlds up to 262,144 circles, 57 s of 60".
+// How far a budget run went: "big worlds up to 262,144 circles, 57 s of 60"; with a stage cut at the budget's
+// end, "big worlds up to 65,536 circles, 66 s of 60 (a stage at 131,072 circles cut at the budget's end)".
 std::string how_far(const Verdict& v) {
   const auto grouped = [](std::uint64_t n) {
     std::string digits = std::to_string(n);
@@ -157,7 +158,8 @@ std::string how_far(const Verdict& v) {
   char elapsed[32];
   std::snprintf(elapsed, sizeof elapsed, "%.0f", v.elapsed.count());
   return (v.largest_world ? "big worlds up to " + grouped(v.largest_world) + " circles, " : std::string()) + elapsed +
-         " s of " + json_number::plain(*v.options.budget);
+         " s of " + json_number::plain(*v.options.budget) +
+         (v.cut_world ? " (a stage at " + grouped(v.cut_world) + " circles cut at the budget's end)" : "");
 }
 
 // The first line of a run's verdict without a counterexample, or of its --keep-going table: "circles conform:

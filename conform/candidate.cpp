@@ -220,6 +220,7 @@ std::string ProcessCandidate::read_line(std::uint64_t id, std::chrono::milliseco
       return line;
     }
     throw_if_interrupted();
+    throw_if_cut();  // the answer stays unanswered_: the program is started afresh before it is asked again
     const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(give_up - std::chrono::steady_clock::now());
     if (left.count() <= 0) {
       kill_group();
@@ -227,8 +228,9 @@ std::string ProcessCandidate::read_line(std::uint64_t id, std::chrono::milliseco
                             seconds(deadline) + " (it was stopped)",
                             Fault::hung);
     }
+    // At most 100 ms a wait, so that a stage's cut (throw_if_cut) is seen within a tenth of a second.
     pollfd ready{from_child_, POLLIN, 0};
-    const int polled = poll(&ready, 1, static_cast<int>(std::min<long long>(left.count(), 1000)));
+    const int polled = poll(&ready, 1, static_cast<int>(std::min<long long>(left.count(), 100)));
     if (polled < 0 && errno != EINTR) throw BrokenCandidate(system_error("poll"));
     if (polled <= 0) continue;
     char chunk[65536];
@@ -373,6 +375,9 @@ Circles ProcessCandidate::answer(const Circles& world, std::uint64_t id) {
 }
 
 void ProcessCandidate::finish() {
+  // A program whose answer a stage's cut left unread is still working on it: a fresh one is what ends at the end
+  // of its input, as every program must.
+  if (unanswered_ > 0) restart();
   if (to_child_ >= 0) {
     close(to_child_);
     to_child_ = -1;

@@ -1,5 +1,7 @@
 #include "conform/checker.hpp"
 
+#include "conform/deadline.hpp"
+
 #include <algorithm>
 #include <atomic>
 #include <thread>
@@ -25,6 +27,7 @@ std::size_t Checker::run_all(std::span<Chain> chains) {
     for (std::size_t k = first; k < chains.size(); ++k) {
       Chain& chain = chains[k];
       if (!chain.going()) continue;
+      throw_if_cut();
       auto reference = properties::expected_step(chain.input(), options_.profile);
       if (!std::holds_alternative<Circles>(reference)) {
         chain.end();

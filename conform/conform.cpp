@@ -2,6 +2,7 @@
 
 #include "conform/checker.hpp"
 #include "conform/corpus.hpp"
+#include "conform/deadline.hpp"
 #include "conform/ladder.hpp"
 #include "conform/replay.hpp"
 #include "formats/json_number.hpp"
@@ -454,6 +455,8 @@ class Run {
       stage.clear();
     }
     Ladder ladder(options_.max_circles);
+    const auto cut_at = start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                    std::chrono::duration<double>(budget * (1 + kCutGrace)));
     for (std::uint64_t q = 0;; ++q) {
       const std::optional<std::size_t> size = ladder.next(budget - elapsed());
       if (!size) break;
@@ -461,7 +464,16 @@ class Run {
       round(q, true, size, stage);
       if (stage.empty()) break;
       const double before = elapsed();
-      if (!run_stage(stage)) return;
+      // The first stage runs whatever it takes; a later one is cut at the budget's end (conform/deadline.hpp),
+      // its cases uncounted but for those before the cut that a failure in case order needs (run_stage).
+      try {
+        std::optional<StageCut> cut;
+        if (q > 0) cut.emplace(cut_at);
+        if (!run_stage(stage)) return;
+      } catch (const StageCutOff&) {
+        verdict_.cut_world = *size;
+        return;
+      }
       ladder.took(*size, elapsed() - before);
     }
   }
@@ -471,6 +483,10 @@ class Run {
   // The share of the budget after which no further round of the small families starts, leaving the rest to the
   // ladder's big worlds.
   static constexpr double kSmallShare = 0.25;
+  // A ladder stage still running this share of the budget after its end is cut (conform/deadline.hpp): the
+  // ladder plans each stage to end with time to spare (Ladder::kMargin), so this is for a world far slower than
+  // the ones before it of its size, and a default run ends within 66 s.
+  static constexpr double kCutGrace = 0.1;
 
   // Shrinks case c's failure (of the family with index `family`) and records it as the family's counterexample.
   void shrink(rc::Shrinkable<Circles> world, std::uint64_t c, std::size_t family, std::optional<std::size_t> circles,
@@ -512,12 +528,11 @@ class Run {
     counterexample.family = properties::name(families[family]);
     counterexample.case_index = c;
     counterexample.replay = replay_command(candidate_.option(), options_, c, circles);
-    if (!options_.save.empty() && !failure.fault.empty()) {
-      counterexample.not_saved = "a program that " + failure.fault + " is replayed by its replay line, not stored";
-    } else if (!options_.save.empty()) {
-      const StoredCounterexample stored{options_.profile, failure.input, options_.level.text(), counterexample.family,
-                                        candidate_.name(), options_.seed, c, steps, failure.step, failure.expected,
-                                        failure.actual, failure.difference};
+    if (!options_.save.empty()) {
+      const StoredCounterexample stored{options_.profile, failure.input,   options_.level.text(), counterexample.family,
+                                        candidate_.name(), options_.seed,   c,
+                                        steps,             failure.step,    failure.expected,
+                                        failure.actual,    failure.difference, failure.fault};
       try {
         counterexample.saved = save(options_.save, stored);
       } catch (const CorpusError& e) {

@@ -185,6 +185,7 @@ struct Verdict {
   std::string rerun{};
   std::chrono::duration<double> elapsed{};       // wall time of the check
   std::size_t largest_world = 0;                 // the most circles of a big family's world checked
+  std::size_t cut_world = 0;  // the circles of the worlds of a ladder stage cut at the budget's end, 0: none was
   // The shards a verdict merged from their reports combines (conform/merge.hpp), in order; empty for a run's
   // own verdict, whose shard is options.shard.
   std::vector<std::uint64_t> merged_shards{};

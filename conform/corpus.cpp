@@ -21,7 +21,8 @@ namespace {
 
 constexpr std::string_view kFormat = "circles-counterexample/1";
 constexpr std::string_view kKeys[] = {"format", "profile", "world",  "level",    "seed",     "case",      "family",
-                                      "steps",  "step",    "candidate", "expected", "actual", "difference"};
+                                      "steps",  "step",    "candidate", "expected", "actual", "difference",
+                                      "fault"};
 constexpr std::string_view kDifferenceKeys[] = {"circle", "field", "expected", "actual", "decision"};
 
 
@@ -62,6 +63,7 @@ std::string to_json(const StoredCounterexample& c) {
   if (c.steps) out += "  \"steps\": " + std::to_string(*c.steps) + ",\n";
   if (c.step) out += "  \"step\": " + std::to_string(*c.step) + ",\n";
   if (!c.candidate.empty()) out += "  \"candidate\": " + string(c.candidate) + ",\n";
+  if (!c.fault.empty()) out += "  \"fault\": " + string(c.fault) + ",\n";
   if (c.difference) {
     const properties::Difference& d = *c.difference;
     out += "  \"difference\": {\"circle\": " + std::to_string(d.circle) + ", \"field\": " +
@@ -95,7 +97,7 @@ StoredCounterexample from_json(std::string_view text, const std::string& source)
   for (const auto& [key, value] : root.items())
     if (std::find(std::begin(kKeys), std::end(kKeys), key) == std::end(kKeys))
       read.fail("unknown key " + in_quotes(key) + " (a counterexample has the keys format, profile, world, level, "
-                "seed, case, family, steps, step, candidate, expected, actual and difference)");
+                "seed, case, family, steps, step, candidate, fault, expected, actual and difference)");
   for (const char* key : {"format", "profile", "world"})
     if (!root.contains(key)) read.fail("missing key " + in_quotes(key));
   if (read.string(root["format"], "format") != kFormat)
@@ -111,6 +113,7 @@ StoredCounterexample from_json(std::string_view text, const std::string& source)
   if (root.contains("level")) c.level = read.string(root["level"], "level");
   if (root.contains("family")) c.family = read.string(root["family"], "family");
   if (root.contains("candidate")) c.candidate = read.string(root["candidate"], "candidate");
+  if (root.contains("fault")) c.fault = read.string(root["fault"], "fault");
   if (root.contains("seed")) c.seed = read.integer(root["seed"], "seed");
   if (root.contains("case")) c.case_index = read.integer(root["case"], "case");
   if (root.contains("steps")) c.steps = read.integer(root["steps"], "steps");

@@ -9,7 +9,9 @@
 //    "candidate": "the program `python3 step_naive.py`",
 //    "expected": [[...], ...], "actual": [[...], ...],
 //    "difference": {"circle": 0, "field": "py", "expected": 1.58…, "actual": 1.58…, "decision": "none: …"}}
-// Only "format", "profile" and "world" are needed to replay; the rest records how the counterexample was
+// A program that broke on the world instead of answering has no "actual", and "fault": "crashed or exited",
+// "hung" or "wrote a malformed answer", the difference's decision saying how ("none: the program … exited with
+// status 134 before answering request 9"). Only "format", "profile" and "world" are needed to replay; the rest records how the counterexample was
 // found and what differed, and is checked for its type when present. Numbers follow formats/json_number.hpp.
 #pragma once
 
@@ -40,6 +42,7 @@ struct StoredCounterexample {
   std::optional<std::uint64_t> seed, case_index, steps, step;
   Circles expected, actual;
   std::optional<properties::Difference> difference;
+  std::string fault;  // how the program broke instead of answering (ChainFailure::fault); empty for an answer
 };
 
 // A corpus file that cannot be replayed. what(): "FILE: key \"world\": circle 1, field r: radius -2 is

@@ -1,10 +1,26 @@
 #include "conform/deadline.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 
 namespace circles::conform {
+namespace {
+
+// The time of the StageCut alive, in the steady clock's ticks since its epoch; the largest value while none is.
+constexpr std::chrono::steady_clock::rep kNoCut = std::chrono::steady_clock::duration::max().count();
+std::atomic<std::chrono::steady_clock::rep> stage_cut_at{kNoCut};
+
+}  // namespace
+
+StageCut::StageCut(std::chrono::steady_clock::time_point at) { stage_cut_at.store(at.time_since_epoch().count()); }
+
+StageCut::~StageCut() { stage_cut_at.store(kNoCut); }
+
+void throw_if_cut() {
+  if (std::chrono::steady_clock::now().time_since_epoch().count() >= stage_cut_at.load()) throw StageCutOff();
+}
 
 std::chrono::milliseconds Deadlines::for_world(std::size_t circles) const {
   const double floor = std::chrono::duration<double>(floor_).count();

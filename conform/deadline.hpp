@@ -13,6 +13,7 @@
 #include <chrono>
 #include <cstddef>
 #include <mutex>
+#include <stdexcept>
 
 namespace circles::conform {
 
@@ -37,5 +38,29 @@ class Deadlines {
   std::size_t largest_ = 0;  // m: the most circles of a world answered
   double seconds_ = 0;       // t: the longest time an answer to a world of m circles took
 };
+
+// The end of a stage that may be cut (docs/conform.md, "The time budget"): the ladder's stages after its first
+// are optional, and one whose worlds take far longer than the ladder predicted (a program's cliff on some
+// world, which no earlier stage shows) is cut at the budget's end rather than let run on past it. While a
+// StageCut is alive, throw_if_cut() throws StageCutOff once its time has passed; a program's answer is awaited
+// (ProcessCandidate) and a batch's expected answers are computed (Checker) with it called at least every 100 ms
+// and between worlds.
+// Process-wide, as an interruption is: one check runs at a time in a process, its jobs on threads of it.
+class StageCut {
+ public:
+  explicit StageCut(std::chrono::steady_clock::time_point at);
+  ~StageCut();
+  StageCut(const StageCut&) = delete;
+  StageCut& operator=(const StageCut&) = delete;
+};
+
+// A stage was cut at the budget's end. Not a BrokenCandidate: the program did nothing wrong.
+class StageCutOff : public std::runtime_error {
+ public:
+  StageCutOff() : std::runtime_error("the stage was cut at the budget's end") {}
+};
+
+// Throws StageCutOff when a StageCut's time has passed.
+void throw_if_cut();
 
 }  // namespace circles::conform

@@ -28,15 +28,14 @@ std::optional<std::size_t> Ladder::next(double seconds_left) {
     if (kMargin * *predicted(climbed_) <= seconds_left) return rungs_[climbed_];
     stopped_ = true;
   }
-  // The rungs climbed in turn, from the smallest: the small ones cost little next to the top, and the swarm
-  // keeps its extreme frames to small worlds.
-  for (std::size_t t = 0; t < climbed_; ++t) {
-    const std::size_t k = (cycle_ + t) % climbed_;
-    if (kMargin * seconds_[k] > seconds_left) continue;
-    cycle_ = k + 1;
-    return rungs_[k];
-  }
-  return std::nullopt;
+  // The rung climbed that has had the least time so far, of those that fit (the smallest on a tie): each rung
+  // gets an equal share of the time, so that a small rung, whose stages cost little, asks many more worlds than
+  // the top, and the swarm's features meet in many combinations (its extreme frames only in small worlds).
+  std::optional<std::size_t> least;
+  for (std::size_t k = 0; k < climbed_; ++k)
+    if (kMargin * seconds_[k] <= seconds_left && (!least || spent_[k] < spent_[*least])) least = k;
+  if (!least) return std::nullopt;
+  return rungs_[*least];
 }
 
 void Ladder::took(std::size_t size, double seconds) {
@@ -44,9 +43,11 @@ void Ladder::took(std::size_t size, double seconds) {
   if (k >= rungs_.size()) return;
   if (k == climbed_) {
     seconds_.push_back(seconds);
+    spent_.push_back(seconds);
     ++climbed_;
   } else if (k < climbed_) {
     seconds_[k] = std::max(seconds_[k], seconds);
+    spent_[k] += seconds;
   }
 }
 

@@ -1,7 +1,8 @@
 // The time budget's schedule of big worlds (`circles conform --budget SECONDS`, docs/conform.md "The time
 // budget"): a ladder of world sizes, from kFirstRung circles doubling up to the top (--max-circles), climbed one
 // rung a stage while the program's measured speed predicts that the next rung fits in the time left; then, until
-// the budget is spent, more stages at the rungs climbed, in turn from the smallest, each that still fits.
+// the budget is spent, more stages at the rungs climbed, each time at the one that has had the least time so far
+// (of those that still fit), so that every rung gets an equal share of the time.
 //
 // The prediction: a stage at size s that took t seconds predicts t · (s'/s)^p at size s', where p is the growth
 // measured over the last two rungs climbed, clamped to [1, 2] (a step's time grows at least as n and, testing
@@ -32,7 +33,8 @@ class Ladder {
   const std::vector<std::size_t>& rungs() const { return rungs_; }
 
   // The size of the next stage's worlds, with `seconds_left` of the budget: the first rung always, first; then
-  // the next rung up while it fits, then the rungs climbed in turn, each that fits; nothing when none does.
+  // the next rung up while it fits, then the rung climbed with the least time so far that fits; nothing when
+  // none does.
   std::optional<std::size_t> next(double seconds_left);
   // Records that a stage of worlds of `size` circles (a rung) took `seconds`.
   void took(std::size_t size, double seconds);
@@ -44,9 +46,9 @@ class Ladder {
  private:
   std::vector<std::size_t> rungs_;
   std::vector<double> seconds_;  // the longest time measured at each rung climbed
+  std::vector<double> spent_;    // the time of all stages at each rung climbed
   std::size_t climbed_ = 0;      // rungs run so far: 0 … climbed_ − 1
   bool stopped_ = false;         // the next rung up did not fit once: no more climbing
-  std::size_t cycle_ = 0;        // after the climb: the rung to try first next
 };
 
 }  // namespace circles::conform

@@ -36,7 +36,8 @@ bool oracle_judges(const StepInput& input);
 
 // Steps chained from a world of more than kOracleCircles circles: at most kBigSteps of the input's K, since each
 // costs the reference (and an O(n²) step under test) about as much as all the small worlds' steps together;
-// 3 is what the big_chains family asks (properties::steps_to_decide).
+// 3, so that what an engine keeps from one step to the next (its pair list) is used, and the fuzzer's time goes
+// to more inputs rather than longer chains (conform's big_chains, checking a program's drift past a skin, asks 10).
 inline constexpr std::uint64_t kBigSteps = 3;
 std::uint64_t judged_steps(const StepInput& input);
 

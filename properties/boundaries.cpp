@@ -16,8 +16,9 @@ namespace {
 using spec::CircleDoubles;
 
 // The table of families: one row each, in the order of Family. steps: 2 for tangent_after_step, whose circles
-// become tangent in w_1, a tangency only the step from w_1 decides; 3 for big_chains, chained so that whatever a
-// program keeps from one request to the next is used; 1 for every other family, whose boundary is in w_0.
+// become tangent in w_1, a tangency only the step from w_1 decides; 10 for big_chains, chained so that whatever a
+// program keeps from one request to the next is used, long enough that slow circles drift past a pair list's
+// skin; 1 for every other family, whose boundary is in w_0.
 constexpr FamilyRow kRows[] = {
     {Family::lattice, "lattice", true, false, 1,
      "the property suite's exact worlds (gen::world), rounded: copies, ties, tangencies",
@@ -91,8 +92,8 @@ constexpr FamilyRow kRows[] = {
     {Family::order_borders, "order-borders", false, true, 1,
      "a contact across every half, quarter and eighth border of the index, x and y orders",
      nullptr, detail::order_borders},
-    {Family::big_chains, "big-chains", false, true, 3,
-     "random worlds of 64 … 512 moving circles, chained 3 steps",
+    {Family::big_chains, "big-chains", false, true, 10,
+     "random worlds of 64 … 512 moving circles, chained 10 steps",
      nullptr, detail::big_chains},
 };
 

@@ -114,8 +114,9 @@ inline constexpr std::size_t kMinMaxCircles = 320;
 // The steps a chain from a world of `family` needs (row(family).steps) to reach the family's boundary: 2 for tangent_after_step,
 // whose circles become tangent in w_1, a tangency only the step from w_1 decides; 1 for every other family,
 // whose boundary is in w_0. `circles conform` and step_conforms chain each case at least this far, whatever
-// steps they are asked for, so that the default of one step decides every family's boundary. 3 for big_chains,
-// whose worlds are chained so that whatever a program keeps from one request to the next is used.
+// steps they are asked for, so that the default of one step decides every family's boundary. 10 for big_chains,
+// whose worlds are chained so that whatever a program keeps from one request to the next is used, and long
+// enough that slow circles drift past a pair list's skin.
 std::uint64_t steps_to_decide(Family family);
 
 namespace gen {

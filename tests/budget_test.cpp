@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <memory>
@@ -31,7 +32,7 @@ std::vector<std::size_t> climb(std::size_t top, double budget, double (*seconds)
     asked.push_back(*size);
     spent += seconds(*size);
     ladder.took(*size, seconds(*size));
-    if (asked.size() > 1000) break;
+    if (asked.size() > 100000) break;
   }
   return asked;
 }
@@ -44,11 +45,23 @@ TEST(ladder, doubles_from_512_up_to_the_top) {
   EXPECT_EQ(Ladder(320).rungs(), (std::vector<std::size_t>{320}));
 }
 
-TEST(ladder, climbs_a_linear_program_to_the_top_and_then_goes_through_the_rungs_again) {
-  // 1 µs a circle: 10^6 circles take 1 s, so a budget of 20 s climbs every rung, then asks them again in turn.
-  const auto asked = climb(1'000'000, 20, [](std::size_t n) { return 1e-6 * static_cast<double>(n); });
-  ASSERT_GE(asked.size(), 24u);
-  for (std::size_t k = 0; k < 24; ++k) EXPECT_EQ(asked[k], Ladder(1'000'000).rungs()[k % 12]) << k;
+TEST(ladder, climbs_a_linear_program_to_the_top_and_then_gives_each_rung_an_equal_share_of_the_time) {
+  // 1 µs a circle: 10^6 circles take 1 s, so a budget of 20 s climbs every rung (in about 2 s), then spends the
+  // rest at the rung with the least time so far: about as much time at each rung, so that a rung of n circles
+  // is asked about 1/n as often.
+  const auto seconds = [](std::size_t n) { return 1e-6 * static_cast<double>(n); };
+  const auto asked = climb(1'000'000, 20, seconds);
+  const std::vector<std::size_t> rungs = Ladder(1'000'000).rungs();
+  ASSERT_GE(asked.size(), 12u);
+  for (std::size_t k = 0; k < 12; ++k) EXPECT_EQ(asked[k], rungs[k]) << k;
+  std::vector<double> spent(rungs.size());
+  for (const std::size_t n : asked) spent[std::find(rungs.begin(), rungs.end(), n) - rungs.begin()] += seconds(n);
+  // The top rung's stages take 1 s; every other rung ends within a stage of the top's time.
+  for (std::size_t k = 0; k < rungs.size(); ++k) {
+    EXPECT_LE(spent[k], spent.back() + seconds(rungs[k])) << rungs[k];
+    EXPECT_GE(spent[k] + seconds(rungs[k]), spent.back() - 1.0) << rungs[k];
+  }
+  EXPECT_GT(std::count(asked.begin(), asked.end(), 512u), 100);
 }
 
 TEST(ladder, stops_a_quadratic_program_where_the_next_rung_would_pass_the_budget) {

@@ -184,7 +184,7 @@ TEST(ConformCommand, a_conforming_engine_exits_0_with_the_verdict_on_the_first_l
   EXPECT_EQ(r.err, "");
   EXPECT_EQ(first_line(r.out),
             "circles conform: the double engine conforms: 25 cases, 1 step each (2 for tangent-after-step, whose "
-            "boundary comes only at step 2; 3 for big-chains, so that what a program keeps between requests is used), "
+            "boundary comes only at step 2; 10 for big-chains, so that what a program keeps between requests is used), "
             "level exact, seed 2, resolved profile");
 }
 
@@ -244,7 +244,7 @@ TEST(ConformCommand, a_family_listed_as_failing_that_passes_fails_the_run_with_i
   // --expect implies --keep-going: the table, then the unexpected pass after it.
   EXPECT_EQ(first_line(r.out),
             "circles conform: the double engine does not conform: 25 cases, 1 step each (2 for tangent-after-step, whose "
-            "boundary comes only at step 2; 3 for big-chains, so that what a program keeps between requests is used), "
+            "boundary comes only at step 2; 10 for big-chains, so that what a program keeps between requests is used), "
             "level exact, seed 2, resolved profile");
   EXPECT_NE(r.out.find("\nlattice: unexpected pass (1 case checked): delete its line, " + options.expect + ":1\n"),
             std::string::npos)

@@ -186,6 +186,19 @@ gives_a_slow_program_the_time_its_speed_needs_and_stops_one_that_hangs)
   grep -q "^  step 1 of 1: no answer: the program hung$" "$dir/out" || fail "$(cat "$dir/out" "$dir/err")"
   grep -q "gave no answer to request 11 within " "$dir/out" || fail "$(cat "$dir/out" "$dir/err")"
   ;;
+cuts_a_ladder_stage_that_runs_past_the_budget)
+  # tests/slow_candidate.py, correct and fast below 2048 circles, hangs on every world of 2048 or more: the ladder
+  # climbs to 2048 (1024 took little), and that stage is cut a tenth of the budget after its end, the program
+  # stopped (none left running), the run judged on the cases before it: exit 0, within the budget and the cut.
+  cliff="python3 $source_dir/tests/slow_candidate.py $circles 0 from:2048"
+  start=$(date +%s)
+  run_conform 0 --seed 1 --budget 8 --exec "$cliff"
+  took=$(( $(date +%s) - start ))
+  [ "$took" -le 12 ] || fail "took $took s for a budget of 8: $(cat "$dir/out")"
+  grep -q "big worlds up to 1,024 circles, \([89]\|10\) s of 8 (a stage at 2,048 circles cut at the budget's end)$" "$dir/out" ||
+    fail "$(cat "$dir/out" "$dir/err")"
+  ! pgrep -f "slow_candidate.py $circles 0 from:2048" >/dev/null || fail "a program was left running"
+  ;;
 reports_a_crash_and_a_malformed_line_on_a_world_as_counterexamples_and_logs_every_line)
   # tests/faulty_candidate.cpp, right on worlds of up to 6 circles, breaks on one of 7 or more: a counterexample,
   # exit 1, shrunk to a world of 7 circles on which it breaks the same way, with its replay line, which
@@ -197,8 +210,16 @@ reports_a_crash_and_a_malformed_line_on_a_world_as_counterexamples_and_logs_ever
     abort) kind="crashed or exited" ;;
     garble) kind="wrote a malformed answer" ;;
     esac
-    run_conform 1 --seed 2 --budget 5 --exec "$faulty $mode 7" --log "$dir/log"
+    run_conform 1 --seed 2 --budget 5 --exec "$faulty $mode 7" --log "$dir/log" --save "$dir/corpus-$mode"
     grep -q "^  step 1 of 1: no answer: the program $kind$" "$dir/out" || fail "$mode: $(cat "$dir/out")"
+    # Stored with its kind of fault, and asked first by the next run with the same --save.
+    grep -q "^  \"fault\": \"$kind\",$" "$dir"/corpus-$mode/counterexample-*.json ||
+      fail "$mode: not stored with its fault: $(cat "$dir"/corpus-$mode/* "$dir/out")"
+    cp "$dir/out" "$dir/found"
+    run_conform 1 --seed 2 --budget 5 --exec "$faulty $mode 7" --save "$dir/corpus-$mode"
+    grep -q "^counterexample: stored in $dir/corpus-$mode/counterexample-[0-9a-f]*.json, replayed first (found as case [0-9]* of seed 2, family [a-z-]*)$" "$dir/out" &&
+      grep -q "^  step 1 of 1: no answer: the program $kind$" "$dir/out" || fail "$mode: not replayed: $(cat "$dir/out")"
+    cp "$dir/found" "$dir/out"
     [ "$(grep -c '^    #' "$dir/out")" -eq 14 ] || fail "$mode: not shrunk to 7 circles: $(cat "$dir/out")"
     grep -q "^counterexample: case [0-9]* of seed 2 (family [a-z-]*), shrunk from" "$dir/out" || fail "$(cat "$dir/out")"
     replay=$(sed -n 's/^replay: //p' "$dir/out")

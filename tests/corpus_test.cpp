@@ -80,7 +80,7 @@ TEST(corpus, refuses_corpus_files_it_cannot_replay_naming_the_file_and_the_place
             "F.json: key \"format\": expected \"circles-counterexample/1\", found \"other\"");
   EXPECT_EQ(error(head + R"("world": [], "note": 1})"),
             "F.json: unknown key \"note\" (a counterexample has the keys format, profile, world, level, seed, case, "
-            "family, steps, step, candidate, expected, actual and difference)");
+            "family, steps, step, candidate, fault, expected, actual and difference)");
   EXPECT_EQ(error(R"({"format": "circles-counterexample/1", "profile": "exact", "world": []})"),
             "F.json: key \"profile\": expected \"resolved\" or \"literal\", found \"exact\"");
   EXPECT_EQ(error(head + R"("world": [[0, 0, 0, 0, -2]]})"),

@@ -9,6 +9,7 @@
 #include <limits>
 #include <map>
 #include <numeric>
+#include <unordered_map>
 #include <utility>
 
 namespace circles::testing {
@@ -21,10 +22,13 @@ using Looks = std::vector<std::vector<std::size_t>>;
 // Up to this many circles every pair is tested, as fast steps do below some count: every entry is exact there.
 constexpr std::size_t kAllPairsUpTo = 64;
 // Cells a little over a diameter wide: two circles that touch are at most a diameter of the largest apart, so
-// their cells are the same or adjacent even after x/h is rounded (the margin, 2^-20 of a cell, is far more than
-// the rounding of |x/h| <= 2^40).
+// their cells are the same or adjacent even after x/h is rounded: a quotient |x/h| <= kMaxCell = 2^30 is within
+// 2^30 · 2^-53 = 2^-23 of a cell of its exact value, far inside the margin of 2^-20 of a cell.
 constexpr double kCellMargin = 1 + 0x1p-20;
-constexpr double kMaxCell = 0x1p40;
+constexpr double kMaxCell = 0x1p30;
+// The least cell side: 2^-960, so that a margin of 2^-20 of a cell is a normal number and every rounding error
+// in placing a centre is relative. A world of subnormal scale then sits in one cell, tested pair by pair.
+constexpr double kLeastCell = 0x1p-960;
 
 Looks all_pairs(std::size_t n) {
   Looks looks(n);
@@ -34,23 +38,27 @@ Looks all_pairs(std::size_t n) {
   return looks;
 }
 
+// The largest |coordinate| of a centre.
+double extent(const Circles& w) {
+  double e = 0;
+  for (const CircleDoubles& c : w) e = std::max({e, std::fabs(c[0]), std::fabs(c[1])});
+  return e;
+}
+
 // A uniform grid: each circle in the cell of its centre (a cell keeps its first `capacity` circles, 0: all),
 // each circle looking at the 3 × 3 cells around its own. Cells of side 2·kCellMargin·(the largest radius of the
-// first `sample` circles, 0: of all). All pairs where the grid cannot hold the centres.
+// first `sample` circles, 0: of all), widened where needed so that every cell coordinate is within ±kMaxCell.
 Looks grid(const Circles& w, std::size_t sample, std::size_t capacity, bool pow2_cell) {
   const std::size_t n = w.size();
   double largest = 0;
   for (std::size_t k = 0; k < (sample ? std::min(sample, n) : n); ++k) largest = std::max(largest, w[k][4]);
   double h = 2 * kCellMargin * largest;
   if (pow2_cell && h > 0) h = std::ldexp(1.0, std::ilogb(h));
-  if (!(h > 0)) h = 1;
+  h = std::max({h, extent(w) / kMaxCell, kLeastCell});
   if (!std::isfinite(h)) return all_pairs(n);
   std::vector<std::pair<std::int64_t, std::int64_t>> cell(n);
-  for (std::size_t k = 0; k < n; ++k) {
-    const double x = std::floor(w[k][0] / h), y = std::floor(w[k][1] / h);
-    if (!(std::fabs(x) <= kMaxCell && std::fabs(y) <= kMaxCell)) return all_pairs(n);
-    cell[k] = {static_cast<std::int64_t>(x), static_cast<std::int64_t>(y)};
-  }
+  for (std::size_t k = 0; k < n; ++k)
+    cell[k] = {static_cast<std::int64_t>(std::floor(w[k][0] / h)), static_cast<std::int64_t>(std::floor(w[k][1] / h))};
   std::map<std::pair<std::int64_t, std::int64_t>, std::vector<std::size_t>> cells;
   for (std::size_t k = 0; k < n; ++k) {
     std::vector<std::size_t>& in = cells[cell[k]];
@@ -63,6 +71,63 @@ Looks grid(const Circles& w, std::size_t sample, std::size_t capacity, bool pow2
         if (const auto at = cells.find({cell[i].first + dx, cell[i].second + dy}); at != cells.end())
           for (const std::size_t j : at->second)
             if (j != i) looks[i].push_back(j);
+  return looks;
+}
+
+// A grid per size class, as fast steps do when radii spread (a hierarchical grid): class k holds the circles of
+// radius in [2^k, 2^(k+1)), radius 0 a class below every other, in cells of side 2·kCellMargin·(the class's largest
+// radius), widened where needed so that every cell coordinate is within ±kMaxCell. Each circle looks into its own
+// class and every larger one, over the cells that its box of half-side r + (the class's largest radius), widened
+// by 2^-20 of a cell, meets; each pair so found is looked at from both sides. A few giants then fill their own
+// class's cells only, not every circle's.
+Looks size_classes(const Circles& w) {
+  const std::size_t n = w.size();
+  const double far = extent(w);
+  using Cell = std::pair<std::int64_t, std::int64_t>;
+  struct CellHash {
+    std::size_t operator()(const Cell& c) const {
+      return std::hash<std::uint64_t>()(static_cast<std::uint64_t>(c.first) * 0x9E3779B97F4A7C15u ^
+                                        static_cast<std::uint64_t>(c.second));
+    }
+  };
+  struct Class {
+    double largest = 0, side = 0;
+    std::unordered_map<Cell, std::vector<std::size_t>, CellHash> cells;
+  };
+  const auto class_of = [](double r) { return r > 0 ? std::ilogb(r) : std::numeric_limits<int>::min(); };
+  std::map<int, Class> classes;
+  for (const CircleDoubles& c : w) {
+    Class& k = classes[class_of(c[4])];
+    k.largest = std::max(k.largest, c[4]);
+  }
+  for (auto& [_, k] : classes) {
+    k.side = std::max({2 * kCellMargin * k.largest, far / kMaxCell, kLeastCell});
+    if (!std::isfinite(k.side)) return all_pairs(n);
+  }
+  for (std::size_t j = 0; j < n; ++j) {
+    Class& k = classes[class_of(w[j][4])];
+    k.cells[{static_cast<std::int64_t>(std::floor(w[j][0] / k.side)), static_cast<std::int64_t>(std::floor(w[j][1] / k.side))}]
+        .push_back(j);
+  }
+  Looks looks(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const int own = class_of(w[i][4]);
+    for (auto at = classes.find(own); at != classes.end(); ++at) {
+      const Class& k = at->second;
+      const double reach = (w[i][4] + k.largest) + k.side * 0x1p-20;
+      const double x0 = std::floor((w[i][0] - reach) / k.side), x1 = std::floor((w[i][0] + reach) / k.side);
+      const double y0 = std::floor((w[i][1] - reach) / k.side), y1 = std::floor((w[i][1] + reach) / k.side);
+      if (!std::isfinite(x0 + x1 + y0 + y1)) return all_pairs(n);
+      for (auto x = static_cast<std::int64_t>(x0); x <= static_cast<std::int64_t>(x1); ++x)
+        for (auto y = static_cast<std::int64_t>(y0); y <= static_cast<std::int64_t>(y1); ++y)
+          if (const auto cell = k.cells.find({x, y}); cell != k.cells.end())
+            for (const std::size_t j : cell->second)
+              if (at->first != own || j > i) {
+                looks[i].push_back(j);
+                looks[j].push_back(i);
+              }
+    }
+  }
   return looks;
 }
 
@@ -173,15 +238,49 @@ CircleDoubles image(const Circles& w, std::size_t i, std::vector<std::size_t> lo
   return out;
 }
 
+// Whether no circle of `w` has moved `skin` or more from where it was in `before` (a world of as many circles).
+bool within_skin(const Circles& w, const Circles& before, double skin) {
+  for (std::size_t i = 0; i < w.size(); ++i)
+    if (!(std::fabs(w[i][0] - before[i][0]) < skin && std::fabs(w[i][1] - before[i][1]) < skin)) return false;
+  return true;
+}
+
+// The circles of `w` with each radius grown by `skin`: the pairs a grid finds among them are those within
+// r_a + r_b + 2·skin.
+Circles grown(Circles w, double skin) {
+  for (CircleDoubles& c : w) c[4] += skin;
+  return w;
+}
+
 Looks candidates(const Circles& w, const ScaleBugs& bugs, ScaleState& state) {
   if (bugs.keeps_pairs && state.circles == w.size() && !state.pairs.empty()) {
     Looks looks(w.size());
     for (const auto& [i, j] : state.pairs) looks[i].push_back(j);
     return looks;
   }
+  if (bugs.verlet_skin > 0) {
+    double largest = 0;
+    for (const CircleDoubles& c : w) largest = std::max(largest, c[4]);
+    const double skin = bugs.verlet_skin * largest;
+    const bool keep = state.circles == w.size() && within_skin(w, state.last, skin);
+    state.last = w;
+    Looks looks(w.size());
+    if (keep) {
+      for (const auto& [i, j] : state.pairs) looks[i].push_back(j);
+      return looks;
+    }
+    looks = size_classes(grown(w, skin));
+    state.circles = w.size();
+    state.pairs.clear();
+    for (std::size_t i = 0; i < looks.size(); ++i)
+      for (const std::size_t j : looks[i]) state.pairs.emplace_back(i, j);
+    return looks;
+  }
   Looks looks = bugs.strips ? strips(w, bugs.strips)
                 : bugs.broad == ScaleBugs::Broad::sweep ? sweep(w, bugs.sort_block, bugs.sweep_window)
-                                                        : grid(w, bugs.radius_sample, bugs.cell_capacity, bugs.pow2_cell);
+                : bugs.radius_sample || bugs.cell_capacity || bugs.pow2_cell
+                    ? grid(w, bugs.radius_sample, bugs.cell_capacity, bugs.pow2_cell)
+                    : size_classes(w);
   if (bugs.simd_width)
     for (std::size_t i = w.size() - w.size() % bugs.simd_width; i < w.size(); ++i) looks[i].clear();
   // Two threads, each its half of the circles (by index, or by y about the median), whose contacts across the
@@ -263,8 +362,10 @@ const std::vector<ScaleEntry>& swarm_gallery() {
       {"same-centre-skip", "takes a circle at the same centre for the circle itself", {.skip_same_centre = true}, 65},
       {"position-order", "orders contacts by position alone, not velocity and radius", {.position_order = true}, 65},
       {"flush-subnormal", "writes a next position below DBL_MIN as 0", {.flush_subnormal = true}, 65},
-      {"index-halves", "above 5000 circles, two threads by index never merged", {.index_halves = 5000}, 5001},
-      {"space-halves", "above 8000 circles, two threads by y never merged", {.space_halves = 8000}, 8001},
+      {"index-halves", "above 20,000 circles, two threads by index never merged", {.index_halves = 20000}, 20001},
+      {"space-halves", "above 30,000 circles, two threads by y never merged", {.space_halves = 30000}, 30001},
+      {"verlet-skin", "keeps its pairs within a skin of half the largest radius while no circle moved that far "
+       "since the last request, not since the list was built", {.verlet_skin = 0.5}, 65},
   };
   return entries;
 }

@@ -6,8 +6,9 @@
 // the small families, of at most 8 circles, cannot.
 //
 // One optimized step with a knob per bug, so that each entry differs from the correct optimized step (every knob
-// off, which conforms) in exactly one way. Above 64 circles it finds candidate pairs with a uniform grid of cells
-// a diameter wide, or with a sort and sweep along x, then decides each pair exactly (impl::intersect_exact),
+// off, which conforms) in exactly one way. Above 64 circles it finds candidate pairs with a grid per size class
+// of radius (cells a diameter of the class wide), a uniform grid, or a sort and sweep along x, then decides each
+// pair exactly (impl::intersect_exact),
 // takes each circle's least contact, and moves it by impl::advance_rounded.
 #pragma once
 
@@ -46,12 +47,16 @@ struct ScaleBugs {
   bool flush_subnormal = false;    // a next position below DBL_MIN is written 0
   std::size_t index_halves = 0;    // above N circles, two threads by index whose contacts are never merged
   std::size_t space_halves = 0;    // above N circles, two threads by y (below and above the median), never merged
+  // A pair list with a skin (a Verlet list): the pairs within r_a + r_b + 2·s (s this share of the largest
+  // radius), kept while no circle has moved s since the last request, where it must be since the list was built.
+  double verlet_skin = 0;
 };
 
-// What a step over the protocol keeps from one request to the next (ScaleBugs::keeps_pairs).
+// What a step over the protocol keeps from one request to the next (ScaleBugs::keeps_pairs, verlet_skin).
 struct ScaleState {
   std::size_t circles = 0;
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  Circles last;  // verlet_skin: the world of the last request
 };
 
 // The optimized step with the bugs `bugs`; with none, the correct step (rounded to nearest). `state` carries

@@ -82,7 +82,7 @@ Circles sizes(std::uint64_t round, std::size_t max, Draw& draw) {
   while ((std::size_t{16} << powers) + 1 <= max) ++powers;
   const bool limit = (std::size_t{16} << (powers - 1)) + 1 < max;
   const std::size_t l = draw.level(round, powers + limit);
-  if (draw.largest()) return swarm(max, draw);  // a ladder's world: the swarm's
+  if (draw.largest()) return swarm(max, draw, round == 0 ? Frame::subnormal : Frame::drawn);  // a ladder's: the swarm's
   if (l == powers) return random_world(max, draw);
   const std::size_t p = std::size_t{16} << l;
   const std::size_t side = round < powers + limit ? 1 : static_cast<std::size_t>(round % 3);  // +1, then −1, 0, +1, …
@@ -282,10 +282,10 @@ Circles order_borders(std::uint64_t round, std::size_t max, Draw& draw) {
   return w;
 }
 
-// big_chains: random_world at 64 … 512 circles, moving up to one unit a step, chained 3 steps; on the ladder, the
+// big_chains: random_world at 64 … 512 circles, moving up to one unit a step, chained 10 steps; on the ladder, the
 // swarm's worlds, chained so.
 Circles big_chains(std::uint64_t round, std::size_t max, Draw& draw) {
-  if (draw.largest()) return swarm(max, draw);
+  if (draw.largest()) return swarm(max, draw, round == 0 ? Frame::huge : Frame::drawn);
   static constexpr std::array<std::size_t, 4> kCircles{64, 128, 256, 512};
   return random_world(kCircles[draw.level(round, levels_up_to(kCircles, max))], draw);
 }

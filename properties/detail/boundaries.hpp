@@ -42,7 +42,11 @@ Circles order_borders(std::uint64_t round, std::size_t max, Draw& draw);
 Circles big_chains(std::uint64_t round, std::size_t max, Draw& draw);
 
 // ── The swarm (detail/swarm.cpp): a ladder's world of n circles with its own random subset of features ──────
-Circles swarm(std::size_t n, Draw& draw);
+// Its frame (the scale of its radii): drawn, or one of the extremes: the subnormals themselves (centres and next
+// positions below DBL_MIN) or near 2^1000. A ladder's first stage, which every budget run asks, holds one world
+// of each extreme (sizes's and big_chains's), so that no seed misses the ends of the double range.
+enum class Frame { drawn, subnormal, huge };
+Circles swarm(std::size_t n, Draw& draw, Frame frame = Frame::drawn);
 // The most circles of a swarm world in a frame near 2^1000 or near the subnormals: the double engine, conform's
 // reference for big worlds, slows down by orders of magnitude at those scales (over 600 s for 10^5 circles near
 // 2^-1060, 2 to 4 s for 4096 swarm circles near 2^-1030 here), so the swarm keeps them to sizes it steps in a

@@ -3,7 +3,8 @@
 // features, so that a program's big-world path (its grid, filters, threads) meets combinations nobody listed:
 //   - a radius law: equal; not powers of two; powers of two; spread over 2^±40; a few giants;
 //   - a frame: unit scale; 2^±20 … 2^±40; near 2^1000 or near the subnormals (these two only in worlds of up to
-//     kExtremeCircles circles, where conform's reference stays fast); offset by a value that is not dyadic, or
+//     kExtremeCircles circles, where conform's reference stays fast), or in the subnormals themselves (a ladder's
+//     first stage has one world in them and one near 2^1000: Frame); offset by a value that is not dyadic, or
 //     straddling zero;
 //   - numbers with all 53 bits in use, or small dyadic ones;
 //   - a layout: clusters, a lattice of tangent neighbours, a line, or sparse;
@@ -55,14 +56,19 @@ Circles scaled(Circles w, int j) {
 
 }  // namespace
 
-Circles swarm(std::size_t n, Draw& draw) {
+Circles swarm(std::size_t n, Draw& draw, Frame frame) {
   const auto coin = [&draw] { return draw.below(2) == 0; };
   // The frame: the typical radius r0 = 2^e.
   int e = static_cast<int>(draw.between(-6, 6));
-  switch (draw.below(n <= kExtremeCircles ? 5 : 3)) {
+  const bool extreme = n <= kExtremeCircles;
+  switch (extreme && frame == Frame::huge ? 3 : extreme && frame == Frame::subnormal ? 5 : draw.below(extreme ? 5 : 3)) {
     case 1: e = static_cast<int>(draw.between(20, 40)) * (coin() ? 1 : -1); break;
     case 3: e = static_cast<int>(draw.between(960, 990)); break;       // near 2^1000
     case 4: e = static_cast<int>(draw.between(-1040, -1010)); break;  // near the subnormals
+    // In them: for n <= kExtremeCircles every centre below is within 2^27·r0 of the origin (the non-dyadic
+    // offset, at most 2^20 / 3 spans of 2^7·r0, is the farthest), so below 2^-1023 < DBL_MIN, and so is nearly
+    // every next position (a step moves a circle at most 2·r0).
+    case 5: e = static_cast<int>(draw.between(-1060, -1050)); break;
     default: break;
   }
   const double r0 = std::ldexp(1.0, e);
