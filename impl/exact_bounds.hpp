@@ -45,7 +45,8 @@ inline double error_bound(double m, double radius) noexcept { return centre_boun
 // least the terms; E + x rounds to nearest, and the next double up is at least the exact E + x. The tests
 // find the claim's edges at 2^-50 for kWalkMove (W = 1) and 2^-53 for kWalkSum (A = 1). kWalkAbsolute is
 // slack there (no input tried fails without it: the next double above RN(s) is at least s + η); it stays so
-// that the derivation does not lean on that.
+// that the derivation does not lean on that. proofs/smt/walk.smt2 proves the claim by z3 for every finite E, W,
+// A ≥ 0, refuses kWalkMove = 2^-51 and kWalkSum = 2^-54, and proves it with kWalkAbsolute = 0 as well.
 inline constexpr double kWalkMove = 0x1p-49;
 inline constexpr double kWalkSum = 0x1p-52;
 inline constexpr double kWalkAbsolute = 0x1p-1073;
