@@ -77,6 +77,11 @@ inline constexpr double kApproximateAbsolute = 0x1p-1069;
 // each axis, so within √2·e in the plane, and whose radius is within e of ρ has r + |a − p| ≤ ρ + (1 + √2)·e,
 // so the disc of that radius around a holds the exact disc. kCentreSpread = 2.5 ≥ (1 + √2)·(1 + 2^-5) covers
 // 1 + √2 = 2.41421… with the two roundings of RN(RN(e·2.5) + skin) to spare (docs/exact-engine.md).
+// Where e is subnormal the claim radius ≥ ρ + (1 + √2)·e + skin fails by 0.0711·2^-1074: at e = 5·2^-1074,
+// ρ = 2^-1072, skin = (2^52 + 1)·2^-1071, both sums round down by half an ulp to even and outward_upper adds one
+// ulp, so the radius is ρ + RN(2.5e) + skin exactly, with RN(2.5e) = 12·2^-1074 (proofs/bounds.tsv). The disc
+// still holds by hand, not by machine: the radius is at least ρ + RN(2.5e) + skin ≥ ρ + (1 + √2)·(e − η) + skin,
+// and e − η still bounds the errors (centre_bound's c is at least 2^-50·m + 2η, twice each term).
 inline constexpr double kCentreSpread = 2.5;
 
 // The order (ExactEngine::precedes): approximations each within E of their coordinate decide the order
