@@ -469,6 +469,9 @@ def main(argv):
     if args.mode == "case":
         if len(args.args) not in (1, 2):
             parser.error("case takes PROOF [N]")
+        file, _, variant = args.args[0].partition(":")
+        if not (ROOT / file).is_file() or (variant or None) not in file_variants(ROOT / file):
+            parser.error(f"{args.args[0]}: no such proof (a variant is PATH:NAME, its file's `# variants:` line)")
         cases = Proof.named(args.args[0]).cases()
         number = int(args.args[1]) if len(args.args) == 2 else 1
         if not 1 <= number <= len(cases):
