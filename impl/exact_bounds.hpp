@@ -45,7 +45,8 @@ inline double error_bound(double m, double radius) noexcept { return centre_boun
 // least the terms; E + x rounds to nearest, and the next double up is at least the exact E + x. The tests
 // find the claim's edges at 2^-50 for kWalkMove (W = 1) and 2^-53 for kWalkSum (A = 1). kWalkAbsolute is
 // slack there (no input tried fails without it: the next double above RN(s) is at least s + η); it stays so
-// that the derivation does not lean on that.
+// that the derivation does not lean on that. proofs/smt/walk.smt2 proves the claim by z3 for every finite E, W,
+// A ≥ 0, refuses kWalkMove = 2^-51 and kWalkSum = 2^-54, and proves it with kWalkAbsolute = 0 as well.
 inline constexpr double kWalkMove = 0x1p-49;
 inline constexpr double kWalkSum = 0x1p-52;
 inline constexpr double kWalkAbsolute = 0x1p-1073;
@@ -76,6 +77,11 @@ inline constexpr double kApproximateAbsolute = 0x1p-1069;
 // each axis, so within √2·e in the plane, and whose radius is within e of ρ has r + |a − p| ≤ ρ + (1 + √2)·e,
 // so the disc of that radius around a holds the exact disc. kCentreSpread = 2.5 ≥ (1 + √2)·(1 + 2^-5) covers
 // 1 + √2 = 2.41421… with the two roundings of RN(RN(e·2.5) + skin) to spare (docs/exact-engine.md).
+// Where e is subnormal the claim radius ≥ ρ + (1 + √2)·e + skin fails by 0.0711·2^-1074: at e = 5·2^-1074,
+// ρ = 2^-1072, skin = (2^52 + 1)·2^-1071, both sums round down by half an ulp to even and outward_upper adds one
+// ulp, so the radius is ρ + RN(2.5e) + skin exactly, with RN(2.5e) = 12·2^-1074 (proofs/bounds.tsv). The disc
+// still holds by hand, not by machine: the radius is at least ρ + RN(2.5e) + skin ≥ ρ + (1 + √2)·(e − η) + skin,
+// and e − η still bounds the errors (centre_bound's c is at least 2^-50·m + 2η, twice each term).
 inline constexpr double kCentreSpread = 2.5;
 
 // The order (ExactEngine::precedes): approximations each within E of their coordinate decide the order

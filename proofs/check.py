@@ -6,20 +6,26 @@ the SMT proofs (z3, floating-point theory) in proofs/smt/.
     proofs/check.py prove [--jobs N] [--gappa PATH] [--z3 PATH]
                                      every proof, then every proof with its constant lowered (docs/proofs.md)
     proofs/check.py hash FILE FUNC   the hash of a function's body, for a proof's header
+    proofs/check.py case PROOF [N]   the prover's input for case N (from 1) of PROOF (PATH or PATH:VARIANT),
+                                     to run one case alone: proofs/check.py case P | gappa
 
 static fails when
   - a double constant named k* in impl/ has no row in the registry, or a row names no such constant;
   - a row is neither proofs (paths under proofs/gappa/ or proofs/smt/) nor `none: KIND, REASON` with a known
     KIND;
   - a proof is in no row, or a row's proof is missing, or lacks a header line (models, claim, regime, hash);
+  - a lemma (a proof with a `# lemma:` line: a step other proofs rest on, no constant's) is in a row, or no
+    proof names it in `# uses:`, or it has no `# refute: OLD => NEW` (a weakening of its claim that must not
+    prove); or a proof `# uses:` what is no lemma;
   - a constant a proof defines (`kName = literal;`) differs in exact value from the C++ constant of that name;
   - a proof's `# hash: FILE FUNCTION HEX` is not the hash of FUNCTION's body in FILE now (the code changed
     under the proof: reread the proof against the code, then put the new hash);
   - a mutant of scripts/mutants lowers a proved bound and the registry and the mutant disagree on its slack;
   - docs/hardening.md's mutants table says of a bound other than the registry (its machine-checked column).
-prove fails when a proof does not prove, or when a proved bound, set to the value its row gives after
-`fails` or to its mutant's value (unless the row records that value as `slack`), still proves: a proof
-that holds whatever the constant is proves nothing about it. A `slack` value must still prove.
+prove fails when a proof does not prove, when a lemma with its `# refute:` edit still proves, or when a proved
+bound, set to the value its row gives after `fails` or to its mutant's value (unless the row records that value
+as `slack`), still proves: a proof that holds whatever the constant is proves nothing about it. A `slack` value
+must still prove.
 
 Exit status: 0 all holds, 1 something failed (each failure on its own line on stderr), 2 bad usage.
 """
@@ -131,10 +137,32 @@ def body_hash(path, name):
 
 # ── proofs ───────────────────────────────────────────────────────────────────────────────────────────────
 
+def variant_text(text, variant):
+    """A file's text as one of its variants (`# variants: a b`): a line `#[a] X` is X in variant a and absent in
+    the others; every other line is shared."""
+    lines = []
+    for line in text.splitlines(keepends=True):
+        if m := re.match(r"[#;]\[(\w+)\] ?", line):
+            if m[1] == variant:
+                lines.append(line[m.end():])
+        else:
+            lines.append(line)
+    return "".join(lines)
+
+
+def file_variants(path):
+    """The variants a proof file declares (`# variants: a b`), or [None] for a file that is one proof."""
+    m = re.search(r"^[#;]\s*variants:(.*)$", path.read_text(encoding="utf-8"), re.M)
+    return m[1].split() if m else [None]
+
+
 class Proof:
-    def __init__(self, path):
+    def __init__(self, path, variant=None):
         self.path = path
+        self.variant = variant
         self.text = path.read_text(encoding="utf-8")
+        if variant is not None:
+            self.text = variant_text(self.text, variant)
         self.header = {}
         for line in self.text.splitlines():
             if m := re.match(r"[#;]\s*(\w+):\s*(.*)", line):
@@ -143,9 +171,16 @@ class Proof:
         pattern = SMT_CONSTANT if self.smt else GAPPA_CONSTANT
         self.constants = {m[1]: m[2].strip() for m in pattern.finditer(self.text)}
 
+    @classmethod
+    def named(cls, name):
+        """The proof a registry entry names: PATH, or PATH:VARIANT for one variant of a file."""
+        path, _, variant = name.partition(":")
+        return cls(ROOT / path, variant or None)
+
     @property
     def name(self):
-        return self.path.relative_to(ROOT).as_posix()
+        path = self.path.relative_to(ROOT).as_posix()
+        return path if self.variant is None else f"{path}:{self.variant}"
 
     def cases(self, text=None):
         """The gappa inputs of this proof: one, or one per sign case. `# signs: e; r c` splits on the sign of e
@@ -164,6 +199,16 @@ class Proof:
                     case = case.replace(f"|{name}|", name if sign > 0 else f"(-{name})")
             out.append(case)
         return out
+
+    @property
+    def lemma(self):
+        """A lemma proves a step of other proofs (they name it in `# uses:`), not a constant of impl/."""
+        return "lemma" in self.header
+
+    def refutations(self):
+        """A lemma's `# refute: OLD => NEW` lines: with every OLD of its text made NEW it must not prove."""
+        return [tuple(part.strip() for part in entry.partition("=>")[::2])
+                for entry in self.header.get("refute", [])]
 
     def value(self, name):
         """The exact value of constant name as this proof defines it."""
@@ -191,8 +236,8 @@ Z3 = ["z3"]
 
 
 def all_proofs():
-    return [Proof(path) for folder in PROOF_DIRS for path in sorted((ROOT / folder).glob("*.[gs]*"))
-            if path.suffix in (".g", ".smt2")]
+    return [Proof(path, variant) for folder in PROOF_DIRS for path in sorted((ROOT / folder).glob("*.[gs]*"))
+            if path.suffix in (".g", ".smt2") for variant in file_variants(path)]
 
 
 def gappa(text, seconds):
@@ -278,13 +323,32 @@ def static(failures):
             failures.add(f"{where}: neither proofs nor `none: KIND, REASON`")
         for path in row.proofs:
             proved.add(path)
-            if not path.startswith(PROOF_DIRS) or not (ROOT / path).is_file():
-                failures.add(f"{where}: {path} is no file under {' or '.join(PROOF_DIRS)}")
-            elif row.name not in Proof(ROOT / path).constants:
+            file, _, variant = path.partition(":")
+            if not file.startswith(PROOF_DIRS) or not (ROOT / file).is_file():
+                failures.add(f"{where}: {file} is no file under {' or '.join(PROOF_DIRS)}")
+            elif (variant or None) not in file_variants(ROOT / file):
+                failures.add(f"{where}: {file} has no variant {variant!r} (its `# variants:` line)")
+            elif row.name not in Proof.named(path).constants:
                 failures.add(f"{where}: {path} does not define {row.name}")
-    for proof in all_proofs():
-        if proof.name not in proved:
+    proofs = all_proofs()
+    lemmas = {proof.name: proof for proof in proofs if proof.lemma}
+    used = {name for proof in proofs for name in proof.header.get("uses", [])}
+    for proof in proofs:
+        if proof.lemma:
+            if proof.name not in used:
+                failures.add(f"{proof.name}: a lemma no proof `# uses:`")
+            if proof.name in proved:
+                failures.add(f"{proof.name}: a lemma is no constant's proof: name it in a proof's `# uses:`")
+            if not proof.refutations():
+                failures.add(f"{proof.name}: a lemma needs a `# refute: OLD => NEW` that must not prove")
+            for old, new in proof.refutations():
+                if not old or old not in proof.text:
+                    failures.add(f"{proof.name}: `# refute:` {old!r} is not in its text")
+        elif proof.name not in proved:
             failures.add(f"{proof.name}: in no row of proofs/bounds.tsv")
+        for name in proof.header.get("uses", []):
+            if name not in lemmas:
+                failures.add(f"{proof.name}: `# uses: {name}` is no lemma (a proof with a `# lemma:` line)")
         for key in HEADER:
             if key not in proof.header:
                 failures.add(f"{proof.name}: its header has no `# {key}:` line")
@@ -347,11 +411,14 @@ def jobs_of(rows, failures):
     jobs = []
     for proof in all_proofs():
         jobs.append((proof.name, [(proof, case) for case in proof.cases()], True))
+        for old, new in proof.refutations():
+            jobs.append((f"{proof.name} with {old} => {new}",
+                         [(proof, case) for case in proof.cases(proof.text.replace(old, new))], False))
     mutants = {m.name: mutant_value(m) for m in load_mutants()}
     for row in rows.values():
         if not row.proofs:
             continue
-        proofs = [Proof(ROOT / p) for p in row.proofs]
+        proofs = [Proof.named(p) for p in row.proofs]
         lowered = [v for v in (row.options.get("fails"), mutants.get(row.name))
                    if v and v != "never" and v != row.options.get("slack")]
         if not lowered and row.options.get("fails") != "never":
@@ -387,7 +454,7 @@ def prove(rows, jobs_count, failures):
 
 def main(argv):
     parser = argparse.ArgumentParser(prog="proofs/check.py", description=__doc__.split("\n")[0])
-    parser.add_argument("mode", choices=("static", "prove", "hash"))
+    parser.add_argument("mode", choices=("static", "prove", "hash", "case"))
     parser.add_argument("args", nargs="*")
     parser.add_argument("--jobs", type=int, default=2, help="gappa runs at once (default 2)")
     parser.add_argument("--gappa", default="gappa", help="the gappa program (default: gappa on the PATH)")
@@ -398,6 +465,18 @@ def main(argv):
         if len(args.args) != 2:
             parser.error("hash takes FILE FUNCTION")
         print(body_hash(*args.args) or f"no definition of {args.args[1]} in {args.args[0]}")
+        return 0
+    if args.mode == "case":
+        if len(args.args) not in (1, 2):
+            parser.error("case takes PROOF [N]")
+        file, _, variant = args.args[0].partition(":")
+        if not (ROOT / file).is_file() or (variant or None) not in file_variants(ROOT / file):
+            parser.error(f"{args.args[0]}: no such proof (a variant is PATH:NAME, its file's `# variants:` line)")
+        cases = Proof.named(args.args[0]).cases()
+        number = int(args.args[1]) if len(args.args) == 2 else 1
+        if not 1 <= number <= len(cases):
+            parser.error(f"{args.args[0]} has {len(cases)} case(s)")
+        print(cases[number - 1], end="")
         return 0
     failures = Failures()
     rows = static(failures)

@@ -12,6 +12,7 @@
 #   kDriftBound's Ap ≥ 0, and kDriftAbsolute makes K ≥ 0 against two underflows and the need's absolute part.
 # hash: impl/pair_list.hpp step_bound 89dfb752f7171783
 # hash: impl/pair_list.hpp skin_for 50c1c726c7f837d4
+# uses: proofs/gappa/norm_upper.g
 @rnd = float<ieee_64, ne>;
 kSpeedBound = 0x1.11111111112p-6;
 kDriftBound = 0x1.6a1p-53;
