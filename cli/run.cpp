@@ -1,6 +1,6 @@
 #include "cli/run.hpp"
 
-#include "cli/counted.hpp"
+#include "formats/counted.hpp"
 
 #include "formats/json_number.hpp"
 #include "formats/trace_writer.hpp"
@@ -19,6 +19,8 @@
 #include <utility>
 
 namespace circles::cli {
+
+using formats::counted;
 
 using namespace circles::pictures;
 

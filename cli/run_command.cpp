@@ -1,6 +1,6 @@
 #include "cli/run_command.hpp"
 
-#include "cli/counted.hpp"
+#include "formats/counted.hpp"
 #include "cli/run.hpp"
 #include "formats/scene.hpp"
 
@@ -10,6 +10,9 @@
 #include <utility>
 
 namespace circles::cli {
+
+using formats::counted;
+
 namespace {
 
 // The world to step, in doubles, and the scene's "steps" if it has them. A scene file is read into doubles alone
