@@ -54,7 +54,7 @@ Takes takes_of(const CLI::Option& option);
 // --engine NAME, checked against the registry (its message lists the valid names), and --threads T.
 void add_engine_options(CLI::App* command, std::string& engine_name, unsigned& threads);
 
-// --random N --coverage C --seed S: the benchmarks' random scene (impl/random_scene.hpp) instead of a scene file.
+// --random N --coverage C --seed S: the benchmarks' random scene (formats/random_scene.hpp) instead of a scene file.
 struct RandomOptions {
   std::size_t circles = 0;  // 0: no random scene
   double coverage = 0.1;    // the benchmarks' coverage of the dense target (docs/benchmarks.md, Targets)

@@ -7,8 +7,8 @@
 #include "cli/run.hpp"
 #include "formats/scene.hpp"
 #include "formats/trace_reader.hpp"
-#include "impl/random_scene.hpp"
-#include "impl/state_hash.hpp"
+#include "formats/random_scene.hpp"
+#include "formats/state_hash.hpp"
 #include "tests/temp_dir.hpp"
 #include "tests/thrown.hpp"
 
@@ -103,19 +103,19 @@ TEST(check_trace, a_trace_of_the_double_engine_agrees_with_the_correctly_rounded
   // The hashes are those of the worlds in the file, read apart from the checker.
   const std::vector<std::string> lines = lines_of(path);
   ASSERT_EQ(lines.size(), 201u);
-  impl::StateHash trajectory;
+  formats::StateHash trajectory;
   Circles last;
   for (std::size_t t = 0; t < lines.size(); ++t) {
     last = parse_line(lines[t], t + 1, kStep).circles;
     trajectory.add(last);
   }
-  EXPECT_EQ(check.last_hash, impl::state_hash(last));
+  EXPECT_EQ(check.last_hash, formats::state_hash(last));
   EXPECT_EQ(check.trajectory_hash, trajectory.value());
   const Outcome o = command(path);
   EXPECT_EQ(o.code, 0);
   char hashes[80];
   std::snprintf(hashes, sizeof hashes, "state hash of step 200: %016llx, trajectory hash: %016llx",
-                static_cast<unsigned long long>(impl::state_hash(last)),
+                static_cast<unsigned long long>(formats::state_hash(last)),
                 static_cast<unsigned long long>(trajectory.value()));
   EXPECT_EQ(o.out, "circles check-trace: " + path +
                        ": agrees with the correctly rounded step at each of its 200 steps (steps 0 to 200, 10 "
@@ -137,7 +137,7 @@ TEST(check_trace, the_exact_reference_on_its_grid_agrees_with_the_exact_engine_o
   // 2000 circles (the grid reference's cells prune most pairs) for 5 steps; then one position of step 3 moved
   // by one ulp, which must be named by its line, step, circle and field.
   TempDir dir;
-  const Circles world = impl::random_scene(2000, 0.5, 3);
+  const Circles world = formats::random_scene(2000, 0.5, 3);
   std::vector<std::string> lines = lines_of(record(dir, "t.jsonl", world, 5, "exact"));
   ASSERT_EQ(lines.size(), 6u);
   const Outcome o = command((dir.path / "t.jsonl").string(), TraceReference::exact);
@@ -170,7 +170,7 @@ std::string hex(std::uint64_t h) {
 
 // The trajectory hash of the first `count` lines of a trace, read apart from the checker.
 std::uint64_t trajectory_of(const std::vector<std::string>& lines, std::size_t count) {
-  impl::StateHash h;
+  formats::StateHash h;
   for (std::size_t t = 0; t < count; ++t) h.add(parse_line(lines[t], t + 1, kStep).circles);
   return h.value();
 }
@@ -219,7 +219,7 @@ TEST(check_trace, a_velocity_kept_through_a_contact_is_named_as_the_decision_of_
                        "\n  which decision: the intersect test (3) (docs/math.md#3-intersect--specintersect): circle 0 "
                        "touches circle 1 but kept its own velocity\n"
                        "  the worlds before it agree (steps 4 to 4, 2 circles; trajectory hash " +
-                       hex(impl::state_hash(Circles{{0, 0, 60, 0, 1}, {2, 0, -60, 0, 1}})) + ")\n");
+                       hex(formats::state_hash(Circles{{0, 0, 60, 0, 1}, {2, 0, -60, 0, 1}})) + ")\n");
 }
 
 TEST(check_trace, the_double_and_the_exact_readings_part_where_rounding_each_step_drifts) {

@@ -103,7 +103,7 @@ spec::Q fraction_of(const std::string& text) {
 }
 
 // FNV-1a over the fields' bytes, least significant first, −0 as +0: docs/vectors.md's definition, written
-// out apart from impl/state_hash.cpp.
+// out apart from formats/state_hash.cpp.
 std::string fnv1a(const Circles& w) {
   std::uint64_t h = 14695981039346656037u;  // 0xcbf29ce484222325
   for (const auto& c : w)
