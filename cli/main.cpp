@@ -38,6 +38,10 @@
 namespace {
 
 using namespace circles::cli;
+using circles::conform::trace_reference;
+using circles::conform::VectorsOptions;
+using circles::formats::load_scene_world;
+using circles::formats::SceneError;
 
 // Every command's options, and the command each is parsed into.
 struct Commands {

@@ -20,7 +20,18 @@
 
 namespace circles::cli {
 
+using conform::Comparison;
+using engines::EngineEntry;
+using engines::max_threads;
+using engines::StepOverflow;
+using engines::Stepper;
+using formats::append_exact_line;
 using formats::counted;
+using formats::kStep;
+using formats::LineWriter;
+using formats::output_name;
+using formats::source_of;
+using formats::TextSink;
 
 using namespace circles::pictures;
 

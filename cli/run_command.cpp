@@ -11,7 +11,15 @@
 
 namespace circles::cli {
 
+using formats::any_is_standard_output;
 using formats::counted;
+using formats::default_scene;
+using formats::doubles_of;
+using formats::kMaxSceneSteps;
+using formats::load_scene_world;
+using formats::random_world;
+using formats::Scene;
+using formats::SceneWorld;
 
 namespace {
 

@@ -11,7 +11,12 @@
 
 namespace circles::cli {
 
+using conform::VectorsError;
+using conform::VectorsOptions;
+using conform::VectorsSummary;
 using formats::counted;
+using formats::output_name;
+using formats::SceneError;
 
 CLI::App* add_vectors_command(CLI::App& app, VectorsOptions& options) {
   CLI::App* vectors = app.add_subcommand(

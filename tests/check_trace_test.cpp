@@ -27,6 +27,18 @@
 namespace circles::cli {
 namespace {
 
+using conform::trace_reference;
+using engines::engine;
+using formats::default_scene;
+using formats::doubles_of;
+using formats::format_line;
+using formats::kStep;
+using formats::Line;
+using formats::parse_line;
+using formats::TraceReader;
+using formats::TraceReadError;
+using spec::Circles;
+
 namespace fs = std::filesystem;
 using circles::testing::thrown;
 

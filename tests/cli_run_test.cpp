@@ -28,6 +28,22 @@
 namespace circles::cli {
 namespace {
 
+using conform::compare_with_oracle;
+using conform::Comparison;
+using engines::engine;
+using engines::EngineEntry;
+using engines::max_threads;
+using engines::Stepper;
+using formats::default_scene;
+using formats::doubles_of;
+using formats::format_line;
+using formats::kPartCircles;
+using formats::Line;
+using formats::kStep;
+using formats::parse_line;
+using formats::random_world;
+using spec::Circles;
+
 using circles::testing::kOverflowsAtStep4;
 using circles::testing::kTouching;
 using circles::testing::oracle_worlds;

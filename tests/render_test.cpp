@@ -45,6 +45,8 @@ using namespace circles::pictures;
 
 namespace {
 
+using engines::engine;
+
 using circles::testing::thrown;
 
 using circles::testing::TempDir;

@@ -29,6 +29,18 @@
 namespace circles::cli {
 namespace {
 
+using conform::case_worlds;
+using conform::kVectorsFile;
+using conform::make_vector;
+using conform::VectorsOptions;
+using conform::VectorsSummary;
+using conform::write_vectors;
+using formats::doubles_of;
+using formats::format_vector;
+using formats::load_scene;
+using formats::Vector;
+using spec::Circles;
+
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 
