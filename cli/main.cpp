@@ -14,7 +14,7 @@
 #include "cli/run_command.hpp"
 #include "cli/serve_command.hpp"
 #include "cli/usage.hpp"
-#include "cli/vectors.hpp"
+#include "cli/vectors_command.hpp"
 #include "cli/version.hpp"
 #include "conform/interrupt.hpp"
 #include "engines/registry.hpp"

@@ -1,4 +1,4 @@
-// `circles vectors` (cli/vectors.hpp): each vector is checked against references other than the oracle that
+// `circles vectors` (cli/vectors_command.hpp): each vector is checked against references other than the oracle that
 // made it: the next world against impl::step_all_pairs, the exact next world against the input moved by its
 // new velocity, the hashes against FNV-1a written out here byte by byte, the hex forms against strtod, the
 // features against impl::intersect_exact. examples/python/check_vectors.py checks the same file in another
@@ -7,7 +7,7 @@
 #include "formats/json_number.hpp"
 #include "cli/run.hpp"
 #include "formats/scene.hpp"
-#include "cli/vectors.hpp"
+#include "cli/vectors_command.hpp"
 #include "impl/engine.hpp"
 #include "impl/predicate.hpp"
 #include "tests/temp_dir.hpp"

@@ -1,4 +1,4 @@
-#include "cli/vectors.hpp"
+#include "cli/vectors_command.hpp"
 
 #include "formats/counted.hpp"
 #include "cli/options.hpp"
