@@ -241,7 +241,7 @@ CLI::App* add_conform_command(CLI::App& app, ConformCommandOptions& options) {
 
 std::vector<std::pair<std::string, std::string>> output_files(const ConformCommandOptions& options) {
   std::vector<std::pair<std::string, std::string>> files;
-  for (const conform::ReportFormat& format : conform::kReportFormats)
+  for (const conform::ReportFormat& format : conform::report_formats())
     if (const auto file = options.reports.find(format.option); file != options.reports.end())
       files.emplace_back(format.option, file->second);
   files.emplace_back("--svg", options.svg);

@@ -81,7 +81,7 @@ CLI::Option* takes_one_of(CLI::Option* option, const std::string& metavariable, 
 }
 
 void add_report_options(CLI::App* command, conform::ReportFiles& files, const conform::ReportFormat* except) {
-  for (const conform::ReportFormat& format : conform::kReportFormats)
+  for (const conform::ReportFormat& format : conform::report_formats())
     if (&format != except)
       takes_output_file(command->add_option(format.option, files[format.option],
                                             std::string("Also write the verdict as ") + format.name + " to FILE" +

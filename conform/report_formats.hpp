@@ -1,7 +1,7 @@
 // The reports of a verdict for CI, one row per format: its name, the option that names its file, and its writer.
 // `circles conform` offers every row's option, and `circles report merge` every row's but the JSON report's, which
 // it reads back and writes to its OUT; both write every format given a file. A new format is its writer and a
-// row here.
+// row of the table in report_formats.cpp.
 //
 // Every writer takes the verdict and its counterexample's text as `circles conform` prints it (counterexample_text,
 // conform/verdict_text.hpp), which each report carries.
@@ -9,8 +9,8 @@
 
 #include "conform/conform.hpp"
 
-#include <array>
 #include <map>
+#include <span>
 #include <string>
 
 namespace circles::conform {
@@ -22,8 +22,9 @@ struct ReportFormat {
   std::string (*write)(const Verdict& verdict, const std::string& text);
 };
 
-// JSON (conform/report.hpp), then JUnit XML (conform/junit.hpp).
-extern const std::array<ReportFormat, 2> kReportFormats;
+// The table, in the order the options are declared and the files written: JSON (conform/report.hpp), then JUnit
+// XML (conform/junit.hpp).
+std::span<const ReportFormat> report_formats();
 
 // The row of the JSON report, the one `circles report merge` reads.
 const ReportFormat& json_format();
