@@ -52,8 +52,6 @@ inline constexpr Kind kKinds[] = {Kind::float_naive, Kind::naive_sqrt,   Kind::n
 
 // "float_naive", "naive_sqrt", ...: the CSV's variant column.
 std::string_view id_of(Kind kind);
-// Kind of an id; throws std::invalid_argument naming it.
-Kind kind_of(std::string_view id);
 
 class Variant {
  public:

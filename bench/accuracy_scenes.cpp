@@ -8,7 +8,7 @@
 #include "bench/accuracy.hpp"
 
 #include "impl/exact_engine.hpp"
-#include "impl/random_scene.hpp"
+#include "formats/random_scene.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -73,13 +73,13 @@ Scene dense() {
   return s;
 }
 
-// The benchmarks' random scene (impl/random_scene.hpp) at 40% coverage: 128 circles, radii in [2, 6], |v| ≤ 100,
+// The benchmarks' random scene (formats/random_scene.hpp) at 40% coverage: 128 circles, radii in [2, 6], |v| ≤ 100,
 // every field a full double. Nothing is designed: contacts come at distances no rounding will flip, unless the
 // trajectory wanders onto one.
 Scene random() {
-  Scene s{"random", "random: the benchmarks' random scene, 128 circles at 40% coverage (impl::random_scene, seed 1)", 1000,
+  Scene s{"random", "random: the benchmarks' random scene, 128 circles at 40% coverage (formats::random_scene, seed 1)", 1000,
           {}, {}, {}};
-  s.circles = impl::random_scene(128, 0.4, 1);
+  s.circles = formats::random_scene(128, 0.4, 1);
   return s;
 }
 

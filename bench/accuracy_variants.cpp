@@ -140,12 +140,6 @@ std::string_view id_of(Kind kind) {
   return "?";
 }
 
-Kind kind_of(std::string_view id) {
-  for (const Kind k : kKinds)
-    if (id_of(k) == id) return k;
-  throw std::invalid_argument("no variant named " + std::string(id));
-}
-
 std::unique_ptr<Variant> make_variant(Kind kind, const Circles& scene) {
   switch (kind) {
     case Kind::float_naive: return std::make_unique<EngineVariant<impl::FloatNaiveArithmetic>>(to_float(scene));

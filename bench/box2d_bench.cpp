@@ -6,7 +6,7 @@
 // Box2D works in float; the scene's doubles are rounded to it. Timed like every other stepper
 // (bench/harness.hpp); names follow engine_bench's, family "box2d".
 #include "bench/harness.hpp"
-#include "impl/random_scene.hpp"
+#include "formats/random_scene.hpp"
 
 #include <benchmark/benchmark.h>
 #include <box2d/box2d.h>
@@ -60,7 +60,7 @@ class Box2DScene {
 void register_one(std::size_t n, double coverage) {
   register_steps(
       configuration_name("box2d", coverage, 1, n), n, 1, steps_for(n),
-      [n, coverage] { return std::make_unique<Box2DScene>(impl::random_scene(n, coverage, kSceneSeed)); },
+      [n, coverage] { return std::make_unique<Box2DScene>(formats::random_scene(n, coverage, kSceneSeed)); },
       configuration_labels(coverage, 1));
 }
 

@@ -3,7 +3,7 @@
 // (impl::DoubleEngine, family double_engine) and the exact engine (impl::ExactEngine, family exact_engine) at every
 // coverage of the coverage sweep, and at 10% coverage also on the scene rounded to multiples of 2^-20 (families
 // *_coarse, both engines), which the exact engine holds in 64-bit integers.
-// Every scene is impl::random_scene(n, coverage, kSceneSeed); bench/harness.hpp says how steps are timed.
+// Every scene is formats::random_scene(n, coverage, kSceneSeed); bench/harness.hpp says how steps are timed.
 // scripts/benchmarks runs this program and writes docs/benchmarks.md from its JSON output.
 //
 // Names are <family>/coverage:<percent>/threads:<t>/n:<circles>, and the same figures are counters, so the
@@ -12,7 +12,7 @@
 #include "bench/harness.hpp"
 #include "impl/engine.hpp"
 #include "impl/exact_engine.hpp"
-#include "impl/random_scene.hpp"
+#include "formats/random_scene.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -38,7 +38,7 @@ constexpr std::size_t kAllPairsMax = 10'000;
 std::size_t all_pairs_steps(std::size_t n) { return n < kAllPairsMax ? kStepsPerStepper : 5; }
 
 // The scene of a configuration (each copy makes its own: at most 100 copies of 10^3 circles, untimed).
-Circles scene(std::size_t n, double coverage) { return impl::random_scene(n, coverage, kSceneSeed); }
+Circles scene(std::size_t n, double coverage) { return formats::random_scene(n, coverage, kSceneSeed); }
 
 // The same scene with every value rounded to a multiple of 2^-20. Its common denominator is then at most
 // D = 60·2^20 and every scaled position D·p below 2^41 (the side is 23,337 at 10^6 circles), so the exact
@@ -110,7 +110,7 @@ void register_all() {
 // (the naive test differs from the exact one only within rounding of tangency, which random doubles miss).
 bool baselines_agree() {
   constexpr std::size_t kCircles = 2000, kSteps = 3;
-  const Circles start = impl::random_scene(kCircles, 0.40, kSceneSeed);
+  const Circles start = formats::random_scene(kCircles, 0.40, kSceneSeed);
   AllPairsNaive all_pairs(start);
   UniformGrid grid(start);
   for (std::size_t s = 1; s <= kSteps; ++s) {

@@ -10,7 +10,7 @@
 // in the same process would find its memory backed and its circles in order.
 #include "bench/baselines.hpp"
 #include "impl/engine.hpp"
-#include "impl/random_scene.hpp"
+#include "formats/random_scene.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -56,7 +56,7 @@ int main(int argc, char** argv) {
   app.add_option("--engine", engine, "double or plain-grid")
       ->required()
       ->transform(CLI::CheckedTransformer(engines, CLI::ignore_case));
-  app.add_option("--circles", circles, "Circles of the random scene (impl::random_scene)")
+  app.add_option("--circles", circles, "Circles of the random scene (formats::random_scene)")
       ->required()
       ->check(CLI::Range(std::size_t{1}, std::size_t{std::numeric_limits<std::uint32_t>::max()}));
   app.add_option("--coverage", coverage, "The circles' area over their square's, in (0, 1]")
@@ -64,7 +64,7 @@ int main(int argc, char** argv) {
   app.add_option("--seed", seed, "The scene's seed");
   CLI11_PARSE(app, argc, argv);
   try {
-    circles::spec::Circles scene = circles::impl::random_scene(circles, coverage, seed);
+    circles::spec::Circles scene = circles::formats::random_scene(circles, coverage, seed);
     const double ms = engine == Engine::double_engine ? first_step<DoubleEngineRun>(scene)
                                                       : first_step<circles::bench::UniformGrid>(scene);
     std::printf("first_step_bench: %s, %zu circles, coverage %g, seed %llu: first step %.2f ms\n",

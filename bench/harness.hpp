@@ -1,6 +1,6 @@
 // How every stepping benchmark runs, so that engines, baselines and Box2D are timed alike.
 //
-// One benchmark is one configuration (a stepper on the scene impl::random_scene(n, coverage, kSceneSeed)).
+// One benchmark is one configuration (a stepper on the scene formats::random_scene(n, coverage, kSceneSeed)).
 // Each repetition builds fresh steppers outside the timed loop, takes one untimed warm-up step on each (the
 // first step sorts a random-order input into whatever layout the stepper keeps; later steps start from the
 // layout the previous step left, which is what a long run costs), then times one step per iteration.

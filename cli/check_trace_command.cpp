@@ -1,6 +1,6 @@
 #include "cli/check_trace_command.hpp"
 
-#include "cli/counted.hpp"
+#include "formats/counted.hpp"
 #include "cli/options.hpp"
 #include "formats/input_file.hpp"
 #include "formats/json_number.hpp"
@@ -8,6 +8,8 @@
 #include "formats/trace_reader.hpp"
 
 namespace circles::cli {
+
+using formats::counted;
 
 namespace json_number = formats::json_number;
 using conform::Difference;

@@ -2,8 +2,9 @@
 
 #include "cli/options.hpp"
 #include "cli/conform_report.hpp"
-#include "cli/report.hpp"
 #include "conform/candidate.hpp"
+#include "conform/report_formats.hpp"
+#include "conform/verdict_text.hpp"
 #include "conform/conform.hpp"
 #include "engines/registry.hpp"
 #include "conform/expect.hpp"
@@ -213,12 +214,9 @@ CLI::App* add_conform_command(CLI::App& app, ConformCommandOptions& options) {
                      "N", circles::properties::kMinMaxCircles, std::size_t{1} << 31);
   takes_whole_number(conform->add_option("--case", options.only_case, "Check only this case (to replay a counterexample)"),
                      "N", 0, kMaxCases);
-  takes_output_file(conform->add_option(
-      "--report", options.report, "Also write the verdict as JSON to FILE (conform.md in the docs, Reports for CI)"));
+  add_report_options(conform, options.reports);
   takes_output_file(conform->add_option(
       "--log", options.log, "Write every request line sent to the program and every answer line read to FILE"));
-  takes_output_file(
-      conform->add_option("--junit", options.junit, "Also write the verdict as JUnit XML to FILE, a test case per family"));
   conform->add_flag("--keep-going", options.keep_going,
                     "Check every family, shrink a counterexample per failing family, and print a row per family");
   // --families with nothing after it lists the families (as `circles families` does) instead of checking.
@@ -239,6 +237,16 @@ CLI::App* add_conform_command(CLI::App& app, ConformCommandOptions& options) {
       "--write-expect", options.write_expect,
       "Write this run's failing families to FILE as an expectation file (implies --keep-going)"));
   return conform;
+}
+
+std::vector<std::pair<std::string, std::string>> output_files(const ConformCommandOptions& options) {
+  std::vector<std::pair<std::string, std::string>> files;
+  for (const conform::ReportFormat& format : conform::report_formats())
+    if (const auto file = options.reports.find(format.option); file != options.reports.end())
+      files.emplace_back(format.option, file->second);
+  files.emplace_back("--svg", options.svg);
+  files.emplace_back("--write-expect", options.write_expect);
+  return files;
 }
 
 void note_given(const CLI::App& conform, ConformCommandOptions& options) {
@@ -319,13 +327,11 @@ int conform_command(const ConformCommandOptions& given, std::ostream& out, std::
   if (expectations && conform::judged(verdict.outcome))
     for (const std::string& line : conform::unexpected_passes(verdict, *expectations)) out << line << "\n";
   // The reports for CI, for every verdict; a report that cannot be written makes the run's status 2.
-  const std::string text = counterexample_text(verdict);
   try {
-    if (!given.report.empty()) write_report(given.report, "--report", json_report(verdict, text));
-    if (!given.junit.empty()) write_report(given.junit, "--junit", junit_report(verdict, text));
+    conform::write_reports(given.reports, verdict, conform::counterexample_text(verdict));
     // The expectation file of a run that judged the candidate, whole or not at all.
     if (!given.write_expect.empty() && conform::judged(verdict.outcome)) {
-      write_report(given.write_expect, "--write-expect", conform::expectations_text(verdict));
+      formats::write_file(given.write_expect, "--write-expect " + given.write_expect, conform::expectations_text(verdict));
       out << "expectations: " << given.write_expect << "\n";
     }
   } catch (const formats::OutputError& e) {

@@ -3,10 +3,11 @@
 // add_conform_command declares the options (CLI11) and conform_command runs the command; everything after parsing
 // is the latter, so that tests run the command in process: the checks of the options' values and of the options that exclude each
 // other, the expectation file, the candidate (an engine or a program), conform::check, the expectations
-// applied, the verdict printed (cli/conform_report.hpp) and the reports for CI written (cli/report.hpp).
+// applied, the verdict printed (cli/conform_report.hpp) and the reports for CI written (conform/report_formats.hpp).
 #pragma once
 
 #include "conform/conform.hpp"
+#include "conform/report_formats.hpp"
 #include "properties/boundaries.hpp"
 
 #include <CLI/CLI.hpp>
@@ -15,6 +16,8 @@
 #include <cstdint>
 #include <ostream>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace circles::cli {
 
@@ -53,13 +56,17 @@ struct ConformCommandOptions {
   bool keep_going = false;        // --keep-going
   std::string save;               // --save DIR ("" for none)
   std::string svg;                // --svg FILE ("" for none)
-  std::string report;             // --report FILE.json ("" for none)
-  std::string junit;              // --junit FILE.xml ("" for none)
+  // --report FILE.json, --junit FILE.xml, ...: the file of each report format (conform/report_formats.hpp), by
+  // its option ("" or absent for none)
+  conform::ReportFiles reports;
   std::string log;                // --log FILE: every request and answer line of the program ("" for none)
   std::string expect;             // --expect FILE ("" for none); implies keep_going
   std::string write_expect;       // --write-expect FILE ("" for none); implies keep_going
   std::ostream* progress = nullptr;  // where a run longer than 2 s draws its progress line (a terminal), or none
 };
+
+// Every file the options write to, each beside its option: the reports, --svg and --write-expect.
+std::vector<std::pair<std::string, std::string>> output_files(const ConformCommandOptions& options);
 
 // Declares the command and its options on `app`; the seed's default is a random one.
 CLI::App* add_conform_command(CLI::App& app, ConformCommandOptions& options);

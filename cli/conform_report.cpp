@@ -1,10 +1,9 @@
 #include "cli/conform_report.hpp"
 
-#include "cli/counted.hpp"
-#include "conform/report.hpp"  // difference_line
+#include "conform/verdict_text.hpp"
+#include "formats/counted.hpp"
 #include "formats/json_number.hpp"
 #include "formats/output_file.hpp"
-#include "impl/predicate.hpp"
 #include "pictures/counterexample_svg.hpp"
 
 #include <algorithm>
@@ -12,99 +11,22 @@
 #include <map>
 #include <optional>
 #include <span>
-#include <sstream>
 #include <string>
 #include <vector>
 
 namespace circles::cli {
+
+using formats::counted;
+
 namespace {
 
 using conform::Counterexample;
 using conform::difference_line;
+using conform::head_lines;
 using conform::Outcome;
 using conform::Verdict;
-using spec::Circles;
 using properties::Profile;
 namespace json_number = formats::json_number;
-
-// "  TITLE:", then a line "    #k [px, py, vx, vy, r]" per circle, each after `indent`.
-void print_world(std::ostream& out, const std::string& title, const Circles& w, const std::string& indent = "",
-                 const std::vector<std::size_t>* only = nullptr) {
-  out << indent << "  " << title << (only ? " (" + std::to_string(only->size()) + " of its " + std::to_string(w.size()) +
-                                                " circles: those that decide it; --report's JSON holds them all)"
-                                          : std::string())
-      << ":\n";
-  for (std::size_t k = 0; k < w.size(); ++k) {
-    if (only && !std::binary_search(only->begin(), only->end(), k)) continue;
-    std::string line = indent + "    #" + std::to_string(k) + " [";
-    for (std::size_t f = 0; f < 5; ++f) {
-      if (f) line += ", ";
-      json_number::append_any(line, w[k][f]);
-    }
-    out << line << "]\n";
-  }
-}
-
-// Where it came from: "case 9 of seed 3 (family tangency), shrunk from 4 to 2 circles in 70 tries", or "stored in
-// DIR/F.json, replayed first (found as case 9 of seed 3, family tangency)".
-std::string found(const Verdict& v, const Counterexample& c) {
-  if (!c.stored.empty()) {
-    std::string text = "stored in " + c.stored.string() + ", replayed first";
-    if (c.found_seed && c.found_case)
-      text += " (found as case " + std::to_string(*c.found_case) + " of seed " + std::to_string(*c.found_seed) +
-              (c.family.empty() ? "" : ", family " + c.family) + ")";
-    return text;
-  }
-  return "case " + std::to_string(c.case_index.value_or(0)) + " of seed " + std::to_string(v.options.seed) +
-         " (family " + c.family + "), shrunk from " + std::to_string(c.circles_before) + " to " +
-         counted(c.shrink_path.back().size(), "circle") + " in " + counted(c.tries, "try", "tries");
-}
-
-// The lines that open the report of a counterexample, and its picture's legend.
-std::vector<std::string> head_lines(const Verdict& v) {
-  const Counterexample& c = *v.counterexample;
-  return {
-      "circles conform: " + v.candidate + " does not conform (level " + v.options.level.text() + ", " +
-          properties::name(v.options.profile) + " profile)",
-      "counterexample: " + found(v, c),
-      "  " + difference_line(c),
-      "  which decision: " + c.difference.decision,
-  };
-}
-
-std::string asked_title(const Counterexample& c) {
-  return c.step == 1 ? "the world asked (w_0)" : "the world asked (the candidate's own last answer)";
-}
-
-// The head lines and the three worlds.
-// The circles of a world too big to print whole (more than kPrintWhole) that decide its difference: the circle
-// that differs and every circle that touches it (impl::intersect_exact); for a fault, which no circle decides,
-// the first kPrintWhole.
-constexpr std::size_t kPrintWhole = 64;
-std::optional<std::vector<std::size_t>> deciding(const Counterexample& c) {
-  if (c.input.size() <= kPrintWhole) return std::nullopt;
-  std::vector<std::size_t> out;
-  const std::size_t i = c.difference.circle;
-  for (std::size_t j = 0; j < c.input.size(); ++j)
-    if (c.fault.empty() ? j == i || impl::intersect_exact(c.input[i][0], c.input[i][1], c.input[i][4], c.input[j][0],
-                                                          c.input[j][1], c.input[j][4])
-                        : j < kPrintWhole)
-      out.push_back(j);
-  return out;
-}
-
-void print_worlds(const Verdict& v, std::ostream& out) {
-  const Counterexample& c = *v.counterexample;
-  for (const std::string& line : head_lines(v)) out << line << "\n";
-  const auto only = deciding(c);
-  const std::vector<std::size_t>* some = only ? &*only : nullptr;
-  print_world(out, asked_title(c), c.input, "", some);
-  print_world(out,
-              v.options.profile == Profile::literal ? "expected (the literal oracle's step, rounded to nearest)"
-                                                    : "expected (the correctly rounded oracle step)",
-              c.expected, "", some);
-  if (c.fault.empty()) print_world(out, "answered", c.actual, "", some);
-}
 
 // Draws the picture of the run's counterexample where picture_path says, if anywhere, and says where.
 void draw_picture(const Verdict& v, const std::filesystem::path& svg, std::ostream& out) {
@@ -125,7 +47,7 @@ void draw_picture(const Verdict& v, const std::filesystem::path& svg, std::ostre
 
 void print_counterexample(const Verdict& v, const std::filesystem::path& svg, std::ostream& out) {
   const Counterexample& c = *v.counterexample;
-  print_worlds(v, out);
+  out << conform::counterexample_worlds(v);
   if (!c.saved.empty()) out << "saved: " << c.saved.string() << "\n";
   if (!c.not_saved.empty()) out << "saved: not saved: " << c.not_saved << "\n";
   draw_picture(v, svg, out);
@@ -256,7 +178,7 @@ void print_table(const Verdict& v, std::ostream& out) {
     const Counterexample& c = *f.counterexample;
     const std::string indent(width + 12, ' ');
     out << indent << difference_line(c) << "; which decision: " << c.difference.decision << "\n";
-    print_world(out, asked_title(c), c.input, indent.substr(2));
+    out << conform::world_text(conform::asked_title(c), c.input, indent.substr(2));
     out << indent << "replay: " << c.replay << "\n";
     if (!c.saved.empty()) out << indent << "saved: " << c.saved.string() << "\n";
   }
@@ -272,14 +194,6 @@ void print_table(const Verdict& v, std::ostream& out) {
 }
 
 }  // namespace
-
-std::string counterexample_text(const Verdict& verdict) {
-  if (!verdict.counterexample) return "";
-  std::ostringstream out;
-  print_worlds(verdict, out);
-  out << "replay: " << verdict.counterexample->replay << "\n";
-  return out.str();
-}
 
 std::filesystem::path picture_path(const Verdict& verdict, const std::filesystem::path& svg) {
   if (!svg.empty()) return svg;

@@ -1,4 +1,5 @@
-// What `circles conform` prints of a verdict (conform/conform.hpp), and the picture of its counterexample.
+// What `circles conform` prints of a verdict (conform/conform.hpp) on the terminal, and the picture of its
+// counterexample; the text it shares with the reports for CI is conform/verdict_text.hpp's.
 #pragma once
 
 #include "conform/conform.hpp"
@@ -9,15 +10,10 @@
 
 namespace circles::cli {
 
-
 // Where to draw a counterexample's picture: `svg` if given, else beside the stored counterexample in the
 // verdict's --save directory (the file it was saved as or replayed from, with .svg), else nowhere: a picture
 // is drawn only when asked for, so that runs in a loop leave nothing behind.
 std::filesystem::path picture_path(const conform::Verdict& verdict, const std::filesystem::path& svg);
-
-// The counterexample as print_verdict prints it, without where it was saved or drawn: its lines, the three
-// worlds and the replay line; "" for a verdict without one. The reports for CI carry it (cli/report.hpp).
-std::string counterexample_text(const conform::Verdict& verdict);
 
 // Prints the verdict on `out` ("circles conform: … conforms: 1000 cases, …" with the cases per family, or the
 // counterexample with its worlds, where it was saved, its picture and its replay line), drawing the picture

@@ -14,7 +14,7 @@
 #include "cli/run_command.hpp"
 #include "cli/serve_command.hpp"
 #include "cli/usage.hpp"
-#include "cli/vectors.hpp"
+#include "cli/vectors_command.hpp"
 #include "cli/version.hpp"
 #include "conform/interrupt.hpp"
 #include "engines/registry.hpp"
@@ -38,6 +38,10 @@
 namespace {
 
 using namespace circles::cli;
+using circles::conform::trace_reference;
+using circles::conform::VectorsOptions;
+using circles::formats::load_scene_world;
+using circles::formats::SceneError;
 
 // Every command's options, and the command each is parsed into.
 struct Commands {
@@ -117,13 +121,12 @@ int dispatch(CLI::App& app, Commands& c) {
     if (isatty(STDERR_FILENO)) c.conform_options.progress = &std::cerr;
     // A report on stdout keeps stdout to itself: the verdict goes to stderr.
     const ConformCommandOptions& o = c.conform_options;
-    if (const std::string both = two_on_stdout({{"--report", o.report}, {"--junit", o.junit}, {"--svg", o.svg},
-                                                 {"--write-expect", o.write_expect}});
-        !both.empty()) {
+    const std::vector<std::pair<std::string, std::string>> outputs = output_files(o);
+    if (const std::string both = two_on_stdout(outputs); !both.empty()) {
       std::cerr << "circles conform: " << both << "\n";
       return 2;
     }
-    const bool stdout_taken = any_is_standard_output({o.report, o.junit, o.svg, o.write_expect});
+    const bool stdout_taken = any_on_stdout(outputs);
     end_cleanly_on_interrupt("circles conform", circles::conform::interrupt);
     return conform_command(c.conform_options, stdout_taken ? std::cerr : std::cout, std::cerr);
   }
@@ -131,7 +134,7 @@ int dispatch(CLI::App& app, Commands& c) {
   while (!command->get_subcommands().empty()) command = command->get_subcommands().front();
   end_cleanly_on_interrupt(command_of(*command));
   if (*c.vectors) return vectors_command(c.vectors_options, std::cout, std::cerr);
-  if (*c.merge) return merge_command(c.merge_options.out, c.merge_options.reports, std::cout, std::cerr);
+  if (*c.merge) return merge_command(c.merge_options, std::cout, std::cerr);
   if (*c.check_trace)
     return check_trace_command(c.check_trace_options.file, trace_reference(c.check_trace_options.engine), std::cout,
                                std::cerr);

@@ -80,12 +80,24 @@ CLI::Option* takes_one_of(CLI::Option* option, const std::string& metavariable, 
   });
 }
 
-std::string two_on_stdout(std::initializer_list<std::pair<const char*, std::string>> given) {
-  std::vector<const char*> on_stdout;
+void add_report_options(CLI::App* command, conform::ReportFiles& files, const conform::ReportFormat* except) {
+  for (const conform::ReportFormat& format : conform::report_formats())
+    if (&format != except)
+      takes_output_file(command->add_option(format.option, files[format.option],
+                                            std::string("Also write the verdict as ") + format.name + " to FILE" +
+                                                format.about));
+}
+
+std::string two_on_stdout(const std::vector<std::pair<std::string, std::string>>& given) {
+  std::vector<std::string> on_stdout;
   for (const auto& [option, path] : given)
     if (formats::is_standard_output(path)) on_stdout.push_back(option);
   if (on_stdout.size() < 2) return "";
-  return std::string(on_stdout[0]) + " and " + on_stdout[1] + " both go to stdout; give - to one of them";
+  return on_stdout[0] + " and " + on_stdout[1] + " both go to stdout; give - to one of them";
+}
+
+bool any_on_stdout(const std::vector<std::pair<std::string, std::string>>& given) {
+  return std::any_of(given.begin(), given.end(), [](const auto& output) { return formats::is_standard_output(output.second); });
 }
 
 Takes takes_of(const CLI::Option& option) {

@@ -1,12 +1,14 @@
 // Options that several commands of `circles` declare alike: the engine and its threads (run, serve), and the
-// scene a command runs on, a file or a random scene (oracle, run), with the one choice between them.
+// scene a command runs on, a file or a random scene (oracle, run), with the one choice between them, and the files
+// of the reports (conform, report merge).
 #pragma once
+
+#include "conform/report_formats.hpp"
 
 #include <CLI/CLI.hpp>
 
 #include <cstddef>
 #include <cstdint>
-#include <initializer_list>
 #include <string>
 #include <utility>
 #include <vector>
@@ -31,9 +33,16 @@ CLI::Option* takes_input_file(CLI::Option* option);   // FILE: a file to read, o
 // One of `names`, refused otherwise: "--engine: \"fast\" is not double or exact".
 CLI::Option* takes_one_of(CLI::Option* option, const std::string& metavariable, const std::vector<std::string>& names);
 
+// A FILE option per report format (conform/report_formats.hpp), "--junit FILE" into files["--junit"], but
+// `except`'s.
+void add_report_options(CLI::App* command, conform::ReportFiles& files, const conform::ReportFormat* except = nullptr);
+
 // "--trace and --video both go to stdout; give - to one of them" when two of the outputs `given` (each an option
 // and its path, "" for none) are stdout (formats::is_standard_output), whose bytes would interleave; else "".
-std::string two_on_stdout(std::initializer_list<std::pair<const char*, std::string>> given);
+std::string two_on_stdout(const std::vector<std::pair<std::string, std::string>>& given);
+// Whether any of the outputs `given` (each an option and its path) is stdout: the command's summary then goes to
+// stderr, so that stdout holds the output alone.
+bool any_on_stdout(const std::vector<std::pair<std::string, std::string>>& given);
 
 // The metavariable and the words of what `option` takes, as the functions above set them: {"N", "a whole
 // number from 0 to 100"}; a flag's are empty.
@@ -45,7 +54,7 @@ Takes takes_of(const CLI::Option& option);
 // --engine NAME, checked against the registry (its message lists the valid names), and --threads T.
 void add_engine_options(CLI::App* command, std::string& engine_name, unsigned& threads);
 
-// --random N --coverage C --seed S: the benchmarks' random scene (impl/random_scene.hpp) instead of a scene file.
+// --random N --coverage C --seed S: the benchmarks' random scene (formats/random_scene.hpp) instead of a scene file.
 struct RandomOptions {
   std::size_t circles = 0;  // 0: no random scene
   double coverage = 0.1;    // the benchmarks' coverage of the dense target (docs/benchmarks.md, Targets)

@@ -1,6 +1,6 @@
 #include "cli/oracle_report.hpp"
 
-#include "cli/counted.hpp"
+#include "formats/counted.hpp"
 #include "spec/oracle.hpp"
 
 #include <iomanip>
@@ -8,6 +8,9 @@
 #include <string_view>
 
 namespace circles::cli {
+
+using formats::counted;
+
 namespace {
 
 using spec::Circle;

@@ -1,6 +1,6 @@
 #include "cli/run.hpp"
 
-#include "cli/counted.hpp"
+#include "formats/counted.hpp"
 
 #include "formats/json_number.hpp"
 #include "formats/trace_writer.hpp"
@@ -19,6 +19,19 @@
 #include <utility>
 
 namespace circles::cli {
+
+using conform::Comparison;
+using engines::EngineEntry;
+using engines::max_threads;
+using engines::StepOverflow;
+using engines::Stepper;
+using formats::append_exact_line;
+using formats::counted;
+using formats::kStep;
+using formats::LineWriter;
+using formats::output_name;
+using formats::source_of;
+using formats::TextSink;
 
 using namespace circles::pictures;
 

@@ -3,7 +3,6 @@
 // (conform::compare_with_oracle).
 #pragma once
 
-#include "cli/names.hpp"
 #include "conform/check_trace.hpp"  // Comparison
 #include "engines/registry.hpp"
 #include "formats/output_file.hpp"
@@ -21,11 +20,11 @@
 namespace circles::cli {
 
 // A trace that cannot be written: what() names the file and the system's reason (formats/output_file.hpp).
-using TraceError = OutputError;
+using TraceError = formats::OutputError;
 
 struct RunOptions {
   std::uint64_t steps = 0;
-  const EngineEntry* engine = nullptr;
+  const engines::EngineEntry* engine = nullptr;
   unsigned threads = 0;     // 0: one per core free of other work (impl::ThreadCount)
   std::string trace{};      // the trace file, or empty for none
   std::string exact_trace{};  // --exact-trace FILE: the exact worlds as rationals (an exact engine only), or empty
@@ -39,7 +38,7 @@ struct RunOptions {
 struct RunResult {
   using Seconds = std::chrono::duration<double>;
   std::uint64_t steps = 0;               // steps taken: the last world is w_steps
-  std::optional<StepOverflow> overflow;  // what stopped the run early, if anything
+  std::optional<engines::StepOverflow> overflow;  // what stopped the run early, if anything
   Seconds stepping{};                    // wall time of the steps alone (not the trace, not the pictures)
   std::uint64_t frames = 0;              // pictures made: w_0, w_K, w_2K, ... up to w_steps
   Seconds fitting{};                     // --fit's first pass (stepping without pictures, for the view)
@@ -71,7 +70,7 @@ struct RunResult {
 //
 // `world` is taken by value so that a caller done with it can move it in: run() frees it once the stepper holds
 // w_0, which for a big world is memory the steps can use.
-RunResult run(Circles world, const RunOptions& options);
+RunResult run(spec::Circles world, const RunOptions& options);
 
 // "100 steps of 10 circles with the double engine (1 thread): 0.000135 s stepping, 135 ns per circle-step" (for
 // threads chosen from the load, "(2 threads, chosen from the load)", or "(1 to 2 threads, ...)" where the count
@@ -98,6 +97,6 @@ void print_stats(const RunResult& result, std::size_t circles, const RunOptions&
 
 // One line: "double engine: agrees with the correctly rounded oracle at each of the 100 steps" or "double
 // engine: DIFFERS from the correctly rounded oracle at step 5, circle 3, field vx: ...".
-void print_comparison(const EngineEntry& engine, const Comparison& c, std::ostream& out);
+void print_comparison(const engines::EngineEntry& engine, const conform::Comparison& c, std::ostream& out);
 
 }  // namespace circles::cli

@@ -1,6 +1,6 @@
 #include "cli/run_command.hpp"
 
-#include "cli/counted.hpp"
+#include "formats/counted.hpp"
 #include "cli/run.hpp"
 #include "formats/scene.hpp"
 
@@ -10,6 +10,17 @@
 #include <utility>
 
 namespace circles::cli {
+
+using formats::any_is_standard_output;
+using formats::counted;
+using formats::default_scene;
+using formats::doubles_of;
+using formats::kMaxSceneSteps;
+using formats::load_scene_world;
+using formats::random_world;
+using formats::Scene;
+using formats::SceneWorld;
+
 namespace {
 
 // The world to step, in doubles, and the scene's "steps" if it has them. A scene file is read into doubles alone

@@ -5,7 +5,7 @@
 #include "impl/engine.hpp"
 #include "impl/exact_grid_reference.hpp"
 #include "impl/grid_reference.hpp"
-#include "impl/state_hash.hpp"
+#include "formats/state_hash.hpp"
 #include "properties/chain.hpp"
 
 #include <limits>
@@ -63,7 +63,7 @@ TraceCheck check_trace(TraceReader& reader, TraceReference kind) {
   check.first_step = check.last_step = first->number;
   check.circles = first->circles.size();
   Reference reference(kind, first->circles);
-  impl::StateHash trajectory;
+  formats::StateHash trajectory;
   trajectory.add(first->circles);
   // The trace's worlds as a chain's answers (properties/chain.hpp), each against the reference's step of the
   // world before it (rounded) or the oracle's own sequence (exact); the reader holds every line to the first's
@@ -84,7 +84,7 @@ TraceCheck check_trace(TraceReader& reader, TraceReference kind) {
     check.last_step = now->number;
     previous_line = reader.line();
   }
-  check.last_hash = impl::state_hash(chain.failure() ? chain.failure()->input : chain.input());
+  check.last_hash = formats::state_hash(chain.failure() ? chain.failure()->input : chain.input());
   check.trajectory_hash = trajectory.value();
   return check;
 }

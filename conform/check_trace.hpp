@@ -51,8 +51,8 @@ struct TraceDivergence {
 struct TraceCheck {
   std::uint64_t first_step = 0, last_step = 0;  // the steps of the worlds that agree: first_step … last_step
   std::size_t circles = 0;
-  std::uint64_t last_hash = 0;        // impl::state_hash of world last_step
-  std::uint64_t trajectory_hash = 0;  // impl::StateHash of worlds first_step … last_step
+  std::uint64_t last_hash = 0;        // formats::state_hash of world last_step
+  std::uint64_t trajectory_hash = 0;  // formats::StateHash of worlds first_step … last_step
   std::optional<TraceDivergence> divergence;
   std::uint64_t steps() const noexcept { return last_step - first_step; }  // steps checked and agreeing
 };

@@ -201,7 +201,7 @@ Outcome checked_outcome(const Verdict& verdict);
 void mark_counterexample_family(Verdict& verdict);
 
 // The worlds of cases 0 … cases − 1 of `seed` in `profile`, each as conform draws it (before any shrinking),
-// whatever the shard: for tools that hand out conform's worlds (cli/vectors.hpp).
+// whatever the shard: for tools that hand out conform's worlds (cli/vectors_command.hpp).
 std::vector<Circles> case_worlds(std::uint64_t seed, std::uint64_t cases, Profile profile = Profile::resolved,
                                  std::size_t max_circles = properties::kDefaultMaxCircles);
 

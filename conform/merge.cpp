@@ -110,9 +110,4 @@ Report merged_report(const std::vector<std::string>& texts, const std::vector<st
   return merged;
 }
 
-std::string merge_reports(const std::vector<std::string>& texts, const std::vector<std::string>& names) {
-  const Report merged = merged_report(texts, names);
-  return json_report(merged.verdict, merged.text);
-}
-
 }  // namespace circles::conform

@@ -1,5 +1,6 @@
 // The reports of `circles conform --report` (conform/report.hpp) of the shards of one run, each read back into a
-// verdict and merged into one by conform's rule for a verdict (checked_outcome): `circles report merge`.
+// verdict and merged into one by conform's rule for a verdict (checked_outcome): `circles report merge`, which
+// writes it in every format of conform/report_formats.hpp.
 #pragma once
 
 #include "conform/report.hpp"
@@ -17,8 +18,5 @@ namespace circles::conform {
 // pass, passed, not reached, skipped that it has in any shard, and its counterexample the one found first.
 // Throws ReportError. `names` name the texts in messages.
 Report merged_report(const std::vector<std::string>& texts, const std::vector<std::string>& names);
-
-// The merged report, as json_report writes it.
-std::string merge_reports(const std::vector<std::string>& texts, const std::vector<std::string>& names);
 
 }  // namespace circles::conform

@@ -1,6 +1,7 @@
 #include "conform/report.hpp"
 
 #include "conform/json_reader.hpp"
+#include "conform/verdict_text.hpp"
 #include "formats/json_number.hpp"
 #include "formats/json_world.hpp"
 #include "formats/protocol.hpp"  // shortened_token
@@ -191,35 +192,6 @@ std::vector<FamilyResult> families_of(const nlohmann::json& r, Profile profile, 
 }
 
 }  // namespace
-
-std::string difference_line(const Counterexample& c) {
-  const properties::Difference& d = c.difference;
-  if (!c.fault.empty())
-    return "step " + std::to_string(c.step) + " of " + std::to_string(c.steps) + ": no answer: the program " + c.fault;
-  return "step " + std::to_string(c.step) + " of " + std::to_string(c.steps) + ", circle " + std::to_string(d.circle) +
-         ", field " + spec::name(d.field) + ": expected " + json_number::decimal_and_hex(d.expected) +
-         ", got " + json_number::decimal_and_hex(d.actual);
-}
-
-std::string counterexample_summary(const Counterexample& c) {
-  return difference_line(c) + "\nwhich decision: " + c.difference.decision + "\nreplay: " + c.replay + "\n";
-}
-
-std::string shard_text(const Verdict& v) {
-  if (v.merged_shards.empty()) return std::to_string(v.options.shard) + "/" + std::to_string(v.options.shards);
-  std::string list;
-  for (const std::uint64_t i : v.merged_shards) {
-    if (!list.empty()) list += ',';
-    list += std::to_string(i);
-  }
-  return list + "/" + std::to_string(v.options.shards);
-}
-
-std::string elapsed_text(const Verdict& v) {
-  std::string text;
-  json_number::append(text, std::max(0.0, v.elapsed.count()));
-  return text;
-}
 
 std::string json_report(const Verdict& v, const std::string& text) {
   const Options& o = v.options;

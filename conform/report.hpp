@@ -1,7 +1,6 @@
-// The JSON report of a verdict (`circles conform --report FILE.json`), written and read back, which `circles report
-// merge OUT.json IN.json...` combines for the shards of one run (conform/merge.hpp); and the lines of a
-// counterexample that every report of it shares (the printed verdict, cli/conform_report.hpp, and the JUnit XML,
-// cli/report.hpp).
+// The JSON report of a verdict (`circles conform --report FILE.json`, a row of conform/report_formats.hpp), written
+// and read back, which `circles report merge OUT.json IN.json...` combines for the shards of one run
+// (conform/merge.hpp).
 //
 // The JSON report, one object (format "circles-conform-report/1"):
 //   {"format": "circles-conform-report/1",
@@ -44,22 +43,8 @@ class ReportError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// "step 1 of 1, circle 0, field px: expected 0.5 (0x1p-1), got 0.25 (0x1p-2)": the line that names where a
-// counterexample differs; for a program that broke instead of answering, "step 1 of 1: no answer: the program
-// crashed or exited".
-std::string difference_line(const Counterexample& c);
-
-// A counterexample other than the run's (which is printed whole) in three lines: its difference_line, which
-// decision differs, and its replay line.
-std::string counterexample_summary(const Counterexample& c);
-
-// The verdict's shard, "0/1", or the shards a merged verdict combines, "0,1,2,3/4".
-std::string shard_text(const Verdict& verdict);
-
-// The verdict's wall time in seconds as the reports write it, "0.43".
-std::string elapsed_text(const Verdict& verdict);
-
-// The JSON report. `text`: the run's counterexample as `circles conform` prints it (cli/conform_report.hpp).
+// The JSON report. `text`: the run's counterexample as `circles conform` prints it (counterexample_text,
+// conform/verdict_text.hpp).
 std::string json_report(const Verdict& verdict, const std::string& text);
 
 // A report read back: the verdict as far as the report holds it, and the text of its counterexample.

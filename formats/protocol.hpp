@@ -79,7 +79,7 @@ std::string in_quotes(std::string_view bytes);
 void append_line(std::string& out, std::string_view counter, std::uint64_t number, const Circles& circles);
 std::string format_line(std::string_view counter, std::uint64_t number, const Circles& circles);
 
-// The 16 lowercase hexadecimal digits of a state hash (impl/state_hash.hpp), as golden vectors and check-trace
+// The 16 lowercase hexadecimal digits of a state hash (formats/state_hash.hpp), as golden vectors and check-trace
 // write it.
 std::string hash_text(std::uint64_t hash);
 

@@ -5,7 +5,7 @@
 #include "formats/plain_line.hpp"
 #include "formats/protocol.hpp"  // printable
 #include "formats/streamed.hpp"
-#include "impl/random_scene.hpp"
+#include "formats/random_scene.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -351,7 +351,7 @@ Circles random_world(std::size_t n, double coverage, std::uint64_t seed, std::si
     throw WorldTooLarge(n, overflows ? std::numeric_limits<std::size_t>::max() : n * bytes_per_circle, memory);
   }
   try {
-    return impl::random_scene(n, coverage, seed);
+    return formats::random_scene(n, coverage, seed);
   } catch (const std::invalid_argument& e) {
     std::string why = e.what();  // "random_scene: coverage 0 is not in (0, 1] (...)"
     if (why.starts_with("random_scene: ")) why.erase(0, std::string_view("random_scene: ").size());

@@ -99,7 +99,7 @@ std::size_t physical_memory();
 // alone) with 20% to spare, as each engine's figure is (engines/registry.cpp, EngineEntry::bytes_per_circle).
 inline constexpr std::size_t kOracleBytesPerCircle = 5120;
 
-// The benchmarks' random scene (impl/random_scene.hpp: r in [2, 6], |v| <= 100, `coverage` of a square), as
+// The benchmarks' random scene (formats/random_scene.hpp: r in [2, 6], |v| <= 100, `coverage` of a square), as
 // doubles [px, py, vx, vy, r]. Throws WorldTooLarge, before allocating anything, when n circles at
 // `bytes_per_circle` each need more than physical_memory(), and SceneError for n = 0 or a coverage outside
 // (0, 1] or too small for a finite square.

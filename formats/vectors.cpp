@@ -2,7 +2,7 @@
 
 #include "formats/json_number.hpp"
 #include "formats/json_world.hpp"
-#include "impl/state_hash.hpp"
+#include "formats/state_hash.hpp"
 
 namespace circles::formats {
 namespace {
@@ -48,13 +48,13 @@ std::string format_vector(std::size_t index, const Vector& v) {
   append_rows(out, v.input, append_decimal);
   out += ",\"input_hex\":";
   append_rows(out, v.input, append_hex);
-  out += ",\"input_hash\":\"" + hash_text(impl::state_hash(v.input)) + "\",\"next_exact\":";
+  out += ",\"input_hash\":\"" + hash_text(formats::state_hash(v.input)) + "\",\"next_exact\":";
   append_exact_world(out, v.next_exact);
   out += ",\"next\":";
   append_rows(out, v.next, append_decimal);
   out += ",\"next_hex\":";
   append_rows(out, v.next, append_hex);
-  out += ",\"next_hash\":\"" + hash_text(impl::state_hash(v.next)) + "\"}";
+  out += ",\"next_hash\":\"" + hash_text(formats::state_hash(v.next)) + "\"}";
   return out;
 }
 

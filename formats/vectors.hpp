@@ -3,7 +3,7 @@
 //
 // A vector is one world of doubles and its next world under the resolved step: exact, as rationals from the
 // oracle (spec::resolved_step), and correctly rounded, as doubles in shortest decimal and in hexadecimal, with
-// the canonical state hash (impl/state_hash.hpp) of the world and of its rounded next world. How the vectors are
+// the canonical state hash (formats/state_hash.hpp) of the world and of its rounded next world. How the vectors are
 // made is conform/vectors.hpp.
 #pragma once
 

@@ -421,33 +421,33 @@ std::string short_number(long double x) {
   return text;
 }
 
-// The zoomed inset of the pair that decides the case (zoomed_pair), in a corner of the world's area: the two
-// circles' edges near the point between them, at a scale where their distance from touching spans a quarter of
-// the inset (its half side is twice that distance), or, where they are nearer to touching than an ulp of the
-// largest of their distance and radii (exactly tangent, say), where that ulp spans half of it. The place is
-// marked in the picture by a square, joined to the inset by a leader line; below the inset, what (3) decides,
-// the distance and the scale.
-void draw_inset(SvgDocument& svg, const PageView& v, const CounterexamplePicture& p, const ZoomedPair& z,
-                bool list_shown) {
-  const Circles& w = p.world;
-  const auto& a = w[z.a];
-  const auto& b = w[z.b];
-  // In coordinates relative to a's centre, where b's centre is the difference of two doubles, exact in long
-  // double: their size is the pair's own (its distance and radii), however far from the origin the pair lies.
+// Where the inset looks: in coordinates relative to circle a's centre, where b's centre is the difference of two
+// doubles, exact in long double (its size is the pair's own, its distance and radii, however far from the origin
+// the pair lies), the point between the two edges and the half side of the window around it: twice the pair's
+// distance from touching, or, where they are nearer to touching than an ulp of the largest of their distance and
+// radii (exactly tangent, say), that ulp.
+struct InsetWindow {
+  long double dx, dy;  // b's centre
+  long double px, py;  // the point between the edges
+  long double half;    // the window's half side
+};
+
+InsetWindow inset_window(const spec::CircleDoubles& a, const spec::CircleDoubles& b, long double gap) {
   const long double dx = static_cast<long double>(b[0]) - a[0], dy = static_cast<long double>(b[1]) - a[1];
   const long double d = std::hypot(dx, dy);
   const long double ux = d > 0 ? dx / d : 1, uy = d > 0 ? dy / d : 0;
-  // The point between the two edges, and the half side of the window around it.
-  const long double along = a[4] + z.gap / 2;
-  const long double px = ux * along, py = uy * along;
+  const long double along = a[4] + gap / 2;
   const double largest = static_cast<double>(std::max({std::fabs(dx), std::fabs(dy), static_cast<long double>(a[4]),
                                                        static_cast<long double>(b[4])}));
   const long double ulp =
       largest > 0 ? largest - std::nextafter(largest, 0.0) : std::numeric_limits<double>::denorm_min();
-  const long double half = std::max(2 * std::fabs(z.gap), ulp);
-  // The inset's corner of the world's area: the one farthest from the place it shows, of the top right, the
-  // bottom right and, unless the list of labels is there, the top left (the axes' arrows are at the bottom left).
-  const double mx = static_cast<double>(v.x(a[0] + px)), my = static_cast<double>(v.y(a[1] + py));
+  return {dx, dy, ux * along, uy * along, std::max(2 * std::fabs(gap), ulp)};
+}
+
+// The inset's corner of the world's area for a place (mx, my) of the picture: the one farthest from it, of the top
+// right, the bottom right and, unless the list of labels is there, the top left (the axes' arrows are at the
+// bottom left).
+std::array<double, 2> inset_corner(const PageView& v, double mx, double my, bool list_shown) {
   const double right = kWidth - kTextLeft - kInset, top = v.top() + 8, bottom = v.bottom() - kInset - 4 * kLineHeight - 8;
   double x0 = right, y0 = top, farthest = -1;
   for (const auto& [x, y, free] : {std::tuple{right, top, true}, std::tuple{right, bottom, true},
@@ -455,20 +455,17 @@ void draw_inset(SvgDocument& svg, const PageView& v, const CounterexamplePicture
     const double distance = std::hypot(x + kInset / 2 - mx, y + kInset / 2 - my);
     if (free && distance > farthest) x0 = x, y0 = y, farthest = distance;
   }
-  const long double scale = kInset / 2 / half;
-  const auto to_inset = [&](long double rx, long double ry) {
-    return std::array{static_cast<double>(x0 + kInset / 2 + (rx - px) * scale),
-                      static_cast<double>(y0 + kInset / 2 + (ry - py) * scale)};
-  };
-  // The marker in the picture, and the leader line to the inset's nearest corner.
-  svg.rect(mx - 5, my - 5, 10, 10, {kBlack, 1});
-  svg.line(mx, my, mx < x0 ? x0 : x0 + kInset, my < y0 ? y0 : y0 + kInset, {kBlack, 0.6, "3 2"});
-  svg.rect(x0, y0, kInset, kInset, {kBlack, 1}, {kWhite});
-  svg.begin_clip(x0, y0, kInset, kInset);
-  // Each edge, the other circle's first and wider, so that two edges on one another both show; each labelled
-  // on its own side, towards its centre.
+  return {x0, y0};
+}
+
+// The two edges inside the inset at (x0, y0), the other circle's first and wider, so that two edges on one another
+// both show; each labelled on its own side, towards its centre. `to_inset` maps the window's coordinates to points.
+template <class ToInset>
+void draw_inset_edges(SvgDocument& svg, const CounterexamplePicture& p, const ZoomedPair& z, const InsetWindow& window,
+                      double x0, double y0, ToInset to_inset) {
+  const auto [dx, dy, px, py, half] = window;
   for (const auto& [j, cx, cy] : {std::tuple{z.b, dx, dy}, std::tuple{z.a, 0.0L, 0.0L}}) {
-    const double r = w[j][4];
+    const double r = p.world[j][4];
     const bool first = j == z.b;
     const std::string_view colour = j == p.circle ? kBlue : kGrey;
     const long double towards = std::atan2(cy - py, cx - px);  // from the edge to the centre
@@ -484,7 +481,10 @@ void draw_inset(SvgDocument& svg, const PageView& v, const CounterexamplePicture
     const double ly = std::clamp(at[1] + 16 * static_cast<double>(std::sin(towards)) + 4, y0 + 12, y0 + kInset - 4);
     svg.text(lx, ly, "#" + std::to_string(j), colour, kFontSize);
   }
-  svg.end_clip();
+}
+
+// Below the inset at (x0, y0): what (3) decides of the pair, their distance from touching and the inset's scale.
+void draw_inset_words(SvgDocument& svg, const ZoomedPair& z, long double scale, double x0, double y0) {
   svg.rect(x0, y0 + kInset, kInset, 4 * kLineHeight + 5, {}, {kWhite, 0.85});
   const auto label = [&](double line, const std::string& text) {
     svg.text(x0 + 2, y0 + kInset + kLineHeight * line, text, kBlack, kFontSize);
@@ -493,6 +493,31 @@ void draw_inset(SvgDocument& svg, const PageView& v, const CounterexamplePicture
   label(2, "|p_b − p_a| − (r_a + r_b)");
   label(3, "  ≈ " + short_number(z.gap));
   label(4, "1 pt here = " + short_number(1 / scale) + " units");
+}
+
+// The zoomed inset of the pair that decides the case (zoomed_pair), in a corner of the world's area: the two
+// circles' edges near the point between them, at a scale where the window (inset_window) spans the inset. The
+// place is marked in the picture by a square, joined to the inset by a leader line; below the inset, what (3)
+// decides, the distance and the scale.
+void draw_inset(SvgDocument& svg, const PageView& v, const CounterexamplePicture& p, const ZoomedPair& z,
+                bool list_shown) {
+  const auto& a = p.world[z.a];
+  const InsetWindow window = inset_window(a, p.world[z.b], z.gap);
+  const double mx = static_cast<double>(v.x(a[0] + window.px)), my = static_cast<double>(v.y(a[1] + window.py));
+  const auto [x0, y0] = inset_corner(v, mx, my, list_shown);
+  const long double scale = kInset / 2 / window.half;
+  const auto to_inset = [&, x0 = x0, y0 = y0](long double rx, long double ry) {
+    return std::array{static_cast<double>(x0 + kInset / 2 + (rx - window.px) * scale),
+                      static_cast<double>(y0 + kInset / 2 + (ry - window.py) * scale)};
+  };
+  // The marker in the picture, and the leader line to the inset's nearest corner.
+  svg.rect(mx - 5, my - 5, 10, 10, {kBlack, 1});
+  svg.line(mx, my, mx < x0 ? x0 : x0 + kInset, my < y0 ? y0 : y0 + kInset, {kBlack, 0.6, "3 2"});
+  svg.rect(x0, y0, kInset, kInset, {kBlack, 1}, {kWhite});
+  svg.begin_clip(x0, y0, kInset, kInset);
+  draw_inset_edges(svg, p, z, window, x0, y0, to_inset);
+  svg.end_clip();
+  draw_inset_words(svg, z, scale, x0, y0);
 }
 
 }  // namespace

@@ -1,14 +1,16 @@
-// `circles check-trace` (conform/check_trace.hpp) and its reader (formats/trace_reader.hpp): traces written by
-// `circles run` agree, a trace changed in one field by one ulp is caught at that step, circle and field, and
-// every trace that is not one is refused with its file, line and reason (exit 2), never a crash.
+// `circles check-trace` (conform/check_trace.hpp): traces written by `circles run` agree, a trace changed in one
+// field by one ulp is caught at that step, circle and field, and every trace that is not one is refused with its
+// file, line and reason (exit 2), never a crash (the reader's own messages are trace_reader_test.cpp's); and the
+// main job's line of an engine stepped beside the oracle (conform::compare_with_oracle, cli::print_comparison).
 #include "cli/check_trace_command.hpp"
 #include "conform/check_trace.hpp"
 #include "engines/registry.hpp"
 #include "cli/run.hpp"
 #include "formats/scene.hpp"
 #include "formats/trace_reader.hpp"
-#include "impl/random_scene.hpp"
-#include "impl/state_hash.hpp"
+#include "formats/random_scene.hpp"
+#include "formats/state_hash.hpp"
+#include "tests/step_worlds.hpp"
 #include "tests/temp_dir.hpp"
 #include "tests/thrown.hpp"
 
@@ -20,6 +22,8 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <optional>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -27,7 +31,25 @@
 namespace circles::cli {
 namespace {
 
+using conform::compare_with_oracle;
+using conform::Comparison;
+using conform::trace_reference;
+using engines::engine;
+using engines::EngineEntry;
+using engines::Stepper;
+using formats::default_scene;
+using formats::doubles_of;
+using formats::format_line;
+using formats::kStep;
+using formats::Line;
+using formats::parse_line;
+using formats::TraceReader;
+using formats::TraceReadError;
+using spec::Circles;
+
 namespace fs = std::filesystem;
+using circles::testing::kOverflowsAtStep4;
+using circles::testing::kTouching;
 using circles::testing::thrown;
 
 using circles::testing::TempDir;
@@ -68,17 +90,6 @@ Outcome command(const std::string& path, TraceReference reference = TraceReferen
   return {code, out.str(), err.str()};
 }
 
-// The reader's message for `text` read as the trace "t.jsonl".
-std::string read_error(const std::string& text) {
-  std::istringstream in(text);
-  TraceReader reader(in, "t.jsonl");
-  const auto e = thrown<TraceReadError>([&] {
-    while (reader.next()) {
-    }
-  });
-  return e ? e->what() : "";
-}
-
 // "0.1 (0x1.999999999999ap-4)", written here with printf rather than by the code under test.
 std::string shown(double x, const char* decimal) {
   char hex[40];
@@ -103,19 +114,19 @@ TEST(check_trace, a_trace_of_the_double_engine_agrees_with_the_correctly_rounded
   // The hashes are those of the worlds in the file, read apart from the checker.
   const std::vector<std::string> lines = lines_of(path);
   ASSERT_EQ(lines.size(), 201u);
-  impl::StateHash trajectory;
+  formats::StateHash trajectory;
   Circles last;
   for (std::size_t t = 0; t < lines.size(); ++t) {
     last = parse_line(lines[t], t + 1, kStep).circles;
     trajectory.add(last);
   }
-  EXPECT_EQ(check.last_hash, impl::state_hash(last));
+  EXPECT_EQ(check.last_hash, formats::state_hash(last));
   EXPECT_EQ(check.trajectory_hash, trajectory.value());
   const Outcome o = command(path);
   EXPECT_EQ(o.code, 0);
   char hashes[80];
   std::snprintf(hashes, sizeof hashes, "state hash of step 200: %016llx, trajectory hash: %016llx",
-                static_cast<unsigned long long>(impl::state_hash(last)),
+                static_cast<unsigned long long>(formats::state_hash(last)),
                 static_cast<unsigned long long>(trajectory.value()));
   EXPECT_EQ(o.out, "circles check-trace: " + path +
                        ": agrees with the correctly rounded step at each of its 200 steps (steps 0 to 200, 10 "
@@ -137,7 +148,7 @@ TEST(check_trace, the_exact_reference_on_its_grid_agrees_with_the_exact_engine_o
   // 2000 circles (the grid reference's cells prune most pairs) for 5 steps; then one position of step 3 moved
   // by one ulp, which must be named by its line, step, circle and field.
   TempDir dir;
-  const Circles world = impl::random_scene(2000, 0.5, 3);
+  const Circles world = formats::random_scene(2000, 0.5, 3);
   std::vector<std::string> lines = lines_of(record(dir, "t.jsonl", world, 5, "exact"));
   ASSERT_EQ(lines.size(), 6u);
   const Outcome o = command((dir.path / "t.jsonl").string(), TraceReference::exact);
@@ -170,7 +181,7 @@ std::string hex(std::uint64_t h) {
 
 // The trajectory hash of the first `count` lines of a trace, read apart from the checker.
 std::uint64_t trajectory_of(const std::vector<std::string>& lines, std::size_t count) {
-  impl::StateHash h;
+  formats::StateHash h;
   for (std::size_t t = 0; t < count; ++t) h.add(parse_line(lines[t], t + 1, kStep).circles);
   return h.value();
 }
@@ -219,7 +230,7 @@ TEST(check_trace, a_velocity_kept_through_a_contact_is_named_as_the_decision_of_
                        "\n  which decision: the intersect test (3) (docs/math.md#3-intersect--specintersect): circle 0 "
                        "touches circle 1 but kept its own velocity\n"
                        "  the worlds before it agree (steps 4 to 4, 2 circles; trajectory hash " +
-                       hex(impl::state_hash(Circles{{0, 0, 60, 0, 1}, {2, 0, -60, 0, 1}})) + ")\n");
+                       hex(formats::state_hash(Circles{{0, 0, 60, 0, 1}, {2, 0, -60, 0, 1}})) + ")\n");
 }
 
 TEST(check_trace, the_double_and_the_exact_readings_part_where_rounding_each_step_drifts) {
@@ -322,80 +333,76 @@ TEST(check_trace, reads_minus_0_as_plus_0_and_names_a_changed_radius_as_no_decis
       << o.out;
 }
 
-TEST(trace_reader, names_the_line_and_reason_of_a_malformed_line) {
-  EXPECT_EQ(read_error("{\"step\":0,\"circles\":[]}\n{\"step\":1,\"circles\":[]}\n{\"step\":2,\"circles\":[[0,0,0,0]]}\n"),
-            "t.jsonl:3: circle 0: expected 5 numbers [px, py, vx, vy, r], found 4");
-  EXPECT_EQ(read_error("{\"step\":0,\"circles\":[[0,0,0,0,-1]]}\n"),
-            "t.jsonl:1: circle 0, field r: radius -1 is negative (r >= 0, the resolved profile) (not an element of C)");
-  EXPECT_EQ(read_error("{\"step\":0,\"circles\":[[NaN,0,0,0,1]]}\n"),
-            "t.jsonl:1: circle 0, field px: NaN is not finite: a request or trace holds finite numbers (only an answer "
-            "to conform may hold NaN, Infinity or -Infinity)");
-  EXPECT_EQ(read_error("{\"step\":0,\"circles\":[[1e309,0,0,0,1]]}\n"),
-            "t.jsonl:1: circle 0, field px: 1e309 is beyond the double range");
-  EXPECT_EQ(read_error("{\"id\":0,\"circles\":[]}\n"),
-            "t.jsonl:1: unexpected key \"id\" (a line has exactly the keys \"step\" and \"circles\")");
-}
-
-TEST(trace_reader, names_a_truncated_last_line) {
-  EXPECT_EQ(read_error("{\"step\":0,\"circles\":[]}\n{\"step\":1,\"circ"),
-            "t.jsonl:2: malformed JSON at column 16: syntax error while parsing object key - invalid string: missing "
-            "closing quote; last read: '\"circ'; expected string literal");
-}
-
-TEST(trace_reader, refuses_steps_that_are_not_consecutive) {
-  EXPECT_EQ(read_error("{\"step\":3,\"circles\":[]}\n{\"step\":4,\"circles\":[]}\n{\"step\":6,\"circles\":[]}\n"),
-            "t.jsonl:3: \"step\": expected 5, found 6 (the steps of a trace are consecutive)");
-  EXPECT_EQ(read_error("{\"step\":3,\"circles\":[]}\n{\"step\":3,\"circles\":[]}\n"),
-            "t.jsonl:2: \"step\": expected 4, found 3 (the steps of a trace are consecutive)");
-  EXPECT_EQ(read_error("{\"step\":18446744073709551615,\"circles\":[]}\n{\"step\":0,\"circles\":[]}\n"),
-            "t.jsonl:2: \"step\": found 0 after 18446744073709551615, the largest step a trace can hold");
-  EXPECT_EQ(read_error("{\"step\":-1,\"circles\":[]}\n"),
-            "t.jsonl:1: \"step\": expected an integer from 0 to 18446744073709551615, found -1");
-}
-
-TEST(trace_reader, refuses_worlds_of_another_length_than_the_first) {
-  EXPECT_EQ(read_error("{\"step\":0,\"circles\":[[0,0,0,0,1]]}\n{\"step\":1,\"circles\":[]}\n"),
-            "t.jsonl:2: 0 circles, but the first world has 1 (a step maps circle k to circle k)");
-}
-
-TEST(trace_reader, refuses_an_empty_line_between_worlds_and_before_the_first) {
-  const std::string empty = "empty line, expected an object {\"step\": N, \"circles\": [[px, py, vx, vy, r], ...]}";
-  EXPECT_EQ(read_error("{\"step\":0,\"circles\":[]}\n\n{\"step\":1,\"circles\":[]}\n"), "t.jsonl:2: " + empty);
-  EXPECT_EQ(read_error("{\"step\":0,\"circles\":[]}\n\n"), "t.jsonl:2: " + empty);
-  EXPECT_EQ(read_error("\n \n{\"step\":0,\"circles\":[]}\n"), "t.jsonl:1: " + empty);
-}
-
-TEST(trace_reader, refuses_a_nul_byte_and_invalid_utf8_as_escaped_bytes) {
-  using namespace std::string_literals;
-  // The NUL is byte 24, after the 23 bytes of the object.
-  EXPECT_EQ(read_error("{\"step\":0,\"circles\":[]}\0\n"s),
-            "t.jsonl:1: malformed JSON at column 24: a NUL byte, which JSON text cannot contain");
-  // The invalid byte is quoted as \xC3, so the message stays one line of ASCII.
-  EXPECT_EQ(read_error("{\"st\xC3\x28p\":0,\"circles\":[]}\n"),
-            "t.jsonl:1: malformed JSON at column 6: syntax error while parsing object key - invalid string: ill-formed "
-            "UTF-8 byte; last read: '\"st\\xC3('; expected string literal");
-}
-
-TEST(trace_reader, reports_the_line_of_each_world_it_returns) {
-  std::istringstream in("{\"step\":0,\"circles\":[]}\n{\"step\":1,\"circles\":[]}\n");
-  TraceReader reader(in, "t.jsonl");
-  EXPECT_EQ(reader.line(), 0u);
-  ASSERT_TRUE(reader.next());
-  EXPECT_EQ(reader.line(), 1u);
-  const std::optional<Line> second = reader.next();
-  ASSERT_TRUE(second);
-  EXPECT_EQ(second->number, 1u);
-  EXPECT_EQ(reader.line(), 2u);
-  EXPECT_FALSE(reader.next());
-  EXPECT_FALSE(reader.next());
-}
-
 TEST(check_trace, the_engine_names_are_double_and_exact) {
   EXPECT_EQ(trace_reference("double"), TraceReference::rounded);
   EXPECT_EQ(trace_reference("exact"), TraceReference::exact);
   const auto e = thrown<std::invalid_argument>([] { trace_reference("oracle"); });
   ASSERT_TRUE(e);
   EXPECT_STREQ(e->what(), "--engine: \"oracle\" is not double or exact");
+}
+
+TEST(compare_with_oracle, finds_the_double_engine_in_agreement_on_the_default_scene) {
+  const Comparison c = compare_with_oracle(engine("double"), doubles_of(default_scene()), 100, 0);
+  EXPECT_EQ(c.steps, 100u);
+  EXPECT_FALSE(c.difference);
+  std::ostringstream out;
+  print_comparison(engine("double"), c, out);
+  EXPECT_EQ(out.str(), "double engine: agrees with the correctly rounded oracle at each of the 100 steps\n");
+}
+
+// An engine that ignores contacts: each circle keeps its velocity. Wrong at the first step with a contact.
+class NoContacts final : public Stepper {
+ public:
+  NoContacts(const Circles& w, unsigned) : w_(w) {}
+  Circles circles() const override { return w_; }
+
+ private:
+  std::optional<Overflow> advance() override {
+    for (auto& c : w_) c = {c[0] + c[2] / 60, c[1] + c[3] / 60, c[2], c[3], c[4]};
+    return std::nullopt;
+  }
+  Circles w_;
+};
+
+std::unique_ptr<Stepper> start_no_contacts(const Circles& w, unsigned threads, std::uint64_t) {
+  return std::make_unique<NoContacts>(w, threads);
+}
+const EngineEntry kNoContacts{"no-contacts", "", false, false, 256, &start_no_contacts};
+
+// kTouching's circles 0 and 1 touch in w_0, so in the oracle circle 0 takes velocity -1 and moves to
+// RN(-1/60); the wrong engine moves it to RN(1/60). 1/60 = 2^-6 · 16/15 = 0x1.111...p-6, rounded down (the
+// next hex digit is 1), and its shortest decimal needs 17 digits: 0.01666666666666667 is 3.6e-18 away, more
+// than half its ulp (2^-59 ≈ 1.7e-18).
+TEST(compare_with_oracle, names_the_first_step_circle_and_field_where_an_engine_differs) {
+  const Comparison c = compare_with_oracle(kNoContacts, kTouching, 10, 1);
+  EXPECT_EQ(c.steps, 0u);
+  ASSERT_TRUE(c.difference);
+  EXPECT_EQ(*c.difference,
+            "step 1, circle 0, field px: oracle -0.016666666666666666 (-0x1.1111111111111p-6), engine "
+            "0.016666666666666666 (0x1.1111111111111p-6)");
+  std::ostringstream out;
+  print_comparison(kNoContacts, c, out);
+  EXPECT_EQ(out.str(), "no-contacts engine: DIFFERS from the correctly rounded oracle at " + *c.difference + "\n");
+}
+
+TEST(compare_with_oracle, agrees_when_both_stop_at_the_same_overflow) {
+  const Comparison c = compare_with_oracle(engine("double"), kOverflowsAtStep4, 10, 1);
+  EXPECT_EQ(c.steps, 3u);
+  EXPECT_FALSE(c.difference);
+  ASSERT_TRUE(c.overflow);
+  std::ostringstream out;
+  print_comparison(engine("double"), c, out);
+  EXPECT_EQ(out.str(),
+            "double engine: agrees with the correctly rounded oracle at each of the 3 steps, after which both stop: "
+            "step 4, circle 1, field px: the position p + v/60 overflows to infinity\n");
+}
+
+TEST(compare_with_oracle, names_an_overflow_only_one_side_reports) {
+  const Comparison c = compare_with_oracle(kNoContacts, kOverflowsAtStep4, 10, 1);
+  ASSERT_TRUE(c.difference);
+  EXPECT_EQ(*c.difference,
+            "step 4: the oracle stops at circle 1, field px: the position p + v/60 overflows to infinity, the engine "
+            "does not");
 }
 
 }  // namespace

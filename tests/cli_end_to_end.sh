@@ -106,7 +106,7 @@ run_takes_the_steps_of_the_scene_unless_steps_is_given)
   grep -q ': 7 steps of 12 circles' "$dir/out" || fail "with --steps 7: $(cat "$dir/out")"
   ;;
 run_random_makes_the_benchmarks_scene)
-  # scenes/random.json is impl::random_scene(128, 0.4, 1), written by bench/accuracy_scenes.cpp.
+  # scenes/random.json is formats::random_scene(128, 0.4, 1), written by bench/accuracy_scenes.cpp.
   "$circles" run --random 128 --coverage 0.4 --seed 1 --steps 0 --trace "$dir/a.jsonl" >"$dir/out"
   "$circles" run "$source_dir/scenes/random.json" --steps 0 --trace "$dir/b.jsonl" >/dev/null
   grep -q '^circles run: a random scene of 128 circles (coverage 0.4, seed 1): 0 steps of 128 circles' "$dir/out" ||

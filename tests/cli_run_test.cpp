@@ -1,6 +1,6 @@
 // `circles run` in process (cli/run.hpp): its trace and exact trace, held to spec::resolved_step_rounded and to
-// the oracle's exact sequence, what it leaves when a write fails, its summary and stats; and the main job's
-// line of an engine stepped beside the oracle (conform::compare_with_oracle, cli::print_comparison).
+// the oracle's exact sequence, what it leaves when a write fails, its summary and stats (its pictures are
+// cli_run_pictures_test.cpp's).
 #include "cli/run.hpp"
 #include "engines/registry.hpp"
 #include "formats/protocol.hpp"
@@ -27,6 +27,17 @@
 
 namespace circles::cli {
 namespace {
+
+using engines::engine;
+using engines::EngineEntry;
+using engines::max_threads;
+using formats::format_line;
+using formats::kPartCircles;
+using formats::Line;
+using formats::kStep;
+using formats::parse_line;
+using formats::random_world;
+using spec::Circles;
 
 using circles::testing::kOverflowsAtStep4;
 using circles::testing::kTouching;
@@ -353,70 +364,6 @@ TEST(run, refuses_a_frame_every_0_steps) {
   RunOptions options{3, &engine("double"), 1, ""};
   options.every = 0;
   EXPECT_THROW(run(kTouching, options), std::invalid_argument);
-}
-
-TEST(compare_with_oracle, finds_the_double_engine_in_agreement_on_the_default_scene) {
-  const Comparison c = compare_with_oracle(engine("double"), doubles_of(default_scene()), 100, 0);
-  EXPECT_EQ(c.steps, 100u);
-  EXPECT_FALSE(c.difference);
-  std::ostringstream out;
-  print_comparison(engine("double"), c, out);
-  EXPECT_EQ(out.str(), "double engine: agrees with the correctly rounded oracle at each of the 100 steps\n");
-}
-
-// An engine that ignores contacts: each circle keeps its velocity. Wrong at the first step with a contact.
-class NoContacts final : public Stepper {
- public:
-  NoContacts(const Circles& w, unsigned) : w_(w) {}
-  Circles circles() const override { return w_; }
-
- private:
-  std::optional<Overflow> advance() override {
-    for (auto& c : w_) c = {c[0] + c[2] / 60, c[1] + c[3] / 60, c[2], c[3], c[4]};
-    return std::nullopt;
-  }
-  Circles w_;
-};
-
-std::unique_ptr<Stepper> start_no_contacts(const Circles& w, unsigned threads, std::uint64_t) {
-  return std::make_unique<NoContacts>(w, threads);
-}
-const EngineEntry kNoContacts{"no-contacts", "", false, false, 256, &start_no_contacts};
-
-// kTouching's circles 0 and 1 touch in w_0, so in the oracle circle 0 takes velocity -1 and moves to
-// RN(-1/60); the wrong engine moves it to RN(1/60). 1/60 = 2^-6 · 16/15 = 0x1.111...p-6, rounded down (the
-// next hex digit is 1), and its shortest decimal needs 17 digits: 0.01666666666666667 is 3.6e-18 away, more
-// than half its ulp (2^-59 ≈ 1.7e-18).
-TEST(compare_with_oracle, names_the_first_step_circle_and_field_where_an_engine_differs) {
-  const Comparison c = compare_with_oracle(kNoContacts, kTouching, 10, 1);
-  EXPECT_EQ(c.steps, 0u);
-  ASSERT_TRUE(c.difference);
-  EXPECT_EQ(*c.difference,
-            "step 1, circle 0, field px: oracle -0.016666666666666666 (-0x1.1111111111111p-6), engine "
-            "0.016666666666666666 (0x1.1111111111111p-6)");
-  std::ostringstream out;
-  print_comparison(kNoContacts, c, out);
-  EXPECT_EQ(out.str(), "no-contacts engine: DIFFERS from the correctly rounded oracle at " + *c.difference + "\n");
-}
-
-TEST(compare_with_oracle, agrees_when_both_stop_at_the_same_overflow) {
-  const Comparison c = compare_with_oracle(engine("double"), kOverflowsAtStep4, 10, 1);
-  EXPECT_EQ(c.steps, 3u);
-  EXPECT_FALSE(c.difference);
-  ASSERT_TRUE(c.overflow);
-  std::ostringstream out;
-  print_comparison(engine("double"), c, out);
-  EXPECT_EQ(out.str(),
-            "double engine: agrees with the correctly rounded oracle at each of the 3 steps, after which both stop: "
-            "step 4, circle 1, field px: the position p + v/60 overflows to infinity\n");
-}
-
-TEST(compare_with_oracle, names_an_overflow_only_one_side_reports) {
-  const Comparison c = compare_with_oracle(kNoContacts, kOverflowsAtStep4, 10, 1);
-  ASSERT_TRUE(c.difference);
-  EXPECT_EQ(*c.difference,
-            "step 4: the oracle stops at circle 1, field px: the position p + v/60 overflows to infinity, the engine "
-            "does not");
 }
 
 }  // namespace

@@ -154,7 +154,7 @@ TEST(ConformCommand, an_svg_file_in_a_missing_directory_exits_2_and_writes_nothi
   const TempDir dir;
   ConformCommandOptions options = double_engine();
   options.svg = (dir.path / "no" / "such" / "picture.svg").string();
-  options.report = (dir.path / "r.json").string();
+  options.reports["--report"] = (dir.path / "r.json").string();
   expect_exit_2(options, "circles conform: --svg: cannot write " + options.svg + ": the directory " +
                              (dir.path / "no" / "such").string() + " does not exist\n");
   EXPECT_TRUE(dir.files().empty());  // not even the report: no case ran
@@ -254,26 +254,26 @@ TEST(ConformCommand, a_family_listed_as_failing_that_passes_fails_the_run_with_i
 TEST(ConformCommand, a_report_is_written_whole_with_the_verdict) {
   const TempDir dir;
   ConformCommandOptions options = double_engine();
-  options.report = (dir.path / "r.json").string();
-  options.junit = (dir.path / "r.xml").string();
+  options.reports["--report"] = (dir.path / "r.json").string();
+  options.reports["--junit"] = (dir.path / "r.xml").string();
   const Printed r = run(options);
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(dir.files(), (std::vector<std::string>{"r.json", "r.xml"}));  // no temporary file left beside them
-  const nlohmann::json report = nlohmann::json::parse(read(options.report));
+  const nlohmann::json report = nlohmann::json::parse(read(options.reports["--report"]));
   EXPECT_EQ(report["verdict"], "conforms");
   EXPECT_EQ(report["candidate"], "the double engine");
   EXPECT_EQ(report["seed"], 2);
   EXPECT_EQ(report["cases"], 25);
-  EXPECT_NE(read(options.junit).find("<testsuite"), std::string::npos);
+  EXPECT_NE(read(options.reports["--junit"]).find("<testsuite"), std::string::npos);
 }
 
 TEST(ConformCommand, a_verdict_that_cannot_check_is_reported_too) {
   const TempDir dir;
   ConformCommandOptions options = silent_program();
-  options.report = (dir.path / "r.json").string();
+  options.reports["--report"] = (dir.path / "r.json").string();
   const Printed r = run(options);
   EXPECT_EQ(r.status, 2);
-  const nlohmann::json report = nlohmann::json::parse(read(options.report));
+  const nlohmann::json report = nlohmann::json::parse(read(options.reports["--report"]));
   EXPECT_EQ(report["verdict"], "cannot check");
   EXPECT_EQ(report["error"], "the program `true` exited with status 0 before answering request 1");
 }
@@ -281,12 +281,12 @@ TEST(ConformCommand, a_verdict_that_cannot_check_is_reported_too) {
 TEST(ConformCommand, a_report_into_a_missing_directory_exits_2_and_leaves_no_file) {
   const TempDir dir;
   ConformCommandOptions options = double_engine();
-  options.report = (dir.path / "no" / "such" / "r.json").string();
+  options.reports["--report"] = (dir.path / "no" / "such" / "r.json").string();
   const Printed r = run(options);
   EXPECT_EQ(r.status, 2);
   // The verdict was printed; the report could not be written.
   EXPECT_EQ(first_line(r.out).rfind("circles conform: the double engine conforms: 25 cases", 0), 0u) << r.out;
-  EXPECT_EQ(r.err.rfind("circles conform: --report " + options.report + ": cannot create ", 0), 0u) << r.err;
+  EXPECT_EQ(r.err.rfind("circles conform: --report " + options.reports["--report"] + ": cannot create ", 0), 0u) << r.err;
   EXPECT_TRUE(dir.files().empty());
 }
 

@@ -283,12 +283,13 @@ TEST(docs, protocol_md_lists_every_command_of_the_program_with_options_it_takes)
   const std::vector<std::string> rows = commands_in_protocol_md();
   EXPECT_GE(rows.size(), 7u);
   std::set<std::string> documented;
-  const std::regex subcommand(R"(^circles ([a-z][a-z-]*)(?: .*)?$)"), option(R"(--[a-z][a-z-]*)"),
-      engines(R"(--engine ([a-z|]+))");
+  // The command and its subcommands, "report merge" of `circles report merge OUT IN...`.
+  const std::regex subcommand(R"(^circles ([a-z][a-z-]*)((?: [a-z][a-z-]*)*)(?: .*)?$)"),
+      option(R"(--[a-z][a-z-]*)"), engines(R"(--engine ([a-z|]+))");
   for (const std::string& row : rows) {
     std::smatch c;
-    const std::string command = std::regex_match(row, c, subcommand) ? c[1].str() : "";
-    if (!command.empty()) documented.insert(command);
+    const std::string command = std::regex_match(row, c, subcommand) ? c[1].str() + c[2].str() : "";
+    if (!command.empty()) documented.insert(c[1].str());
     const Output help = output_of(std::string("'") + CIRCLES_PROGRAM + "' " + command + " --help");
     ASSERT_EQ(help.status, 0) << "circles " << command << " --help";
     for (std::sregex_iterator o(row.begin(), row.end(), option), end; o != end; ++o)

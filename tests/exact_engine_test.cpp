@@ -24,7 +24,7 @@
 #include "formats/scene.hpp"
 #include "impl/engine.hpp"
 #include "impl/exact_integer.hpp"
-#include "impl/random_scene.hpp"
+#include "formats/random_scene.hpp"
 #include "properties/generators.hpp"
 #include "spec/circle.hpp"
 #include "spec/oracle.hpp"
@@ -35,6 +35,7 @@ namespace circles::impl {
 namespace {
 
 using spec::Circles;
+using formats::random_scene;
 using circles::testing::thrown;
 using exact::Narrow;
 using exact::NarrowMagnitude;

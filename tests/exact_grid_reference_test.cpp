@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "impl/grid_reference.hpp"
-#include "impl/random_scene.hpp"
+#include "formats/random_scene.hpp"
 #include "properties/boundaries.hpp"
 #include "spec/oracle.hpp"
 #include "tests/exact_worlds.hpp"
@@ -31,6 +31,7 @@ namespace circles::impl {
 namespace {
 
 using spec::Circles;
+using formats::random_scene;
 using circles::testing::thrown;
 using spec::Q;
 using circles::testing::exact_of;

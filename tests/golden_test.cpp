@@ -1,4 +1,4 @@
-// Golden trajectories: the engine's whole runs, hashed (impl/state_hash.hpp), against committed values.
+// Golden trajectories: the engine's whole runs, hashed (formats/state_hash.hpp), against committed values.
 //
 // The same source is built against the default engine library (-O3 in the default Release build) and against
 // variants compiled at -O0, at -O2 and with -march=x86-64-v3 (AVX2 and hardware FMA in the correctly rounded
@@ -9,8 +9,8 @@
 // recomputed here; the engine must match it. For the larger random scenes the oracle is too slow, so the
 // value is the engine's own, recorded once: a tripwire that any change of a bit, in any build, trips.
 #include "impl/engine.hpp"
-#include "impl/random_scene.hpp"
-#include "impl/state_hash.hpp"
+#include "formats/random_scene.hpp"
+#include "formats/state_hash.hpp"
 
 #include <gtest/gtest.h>
 
@@ -30,6 +30,9 @@ namespace circles::impl {
 namespace {
 
 using spec::Circles;
+using formats::random_scene;
+using formats::state_hash;
+using formats::StateHash;
 
 std::string hex(std::uint64_t h) {
   char buf[32];

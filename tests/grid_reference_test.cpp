@@ -16,13 +16,14 @@
 #include <random>
 #include <vector>
 
-#include "impl/random_scene.hpp"
+#include "formats/random_scene.hpp"
 #include "tests/thrown.hpp"
 
 namespace circles::impl {
 namespace {
 
 using spec::Circles;
+using formats::random_scene;
 using circles::testing::thrown;
 
 // step_grid(w) and step_all_pairs(w) give the same bits, or both throw PositionOverflow for the same circle and

@@ -17,13 +17,14 @@
 
 #include "impl/engine.hpp"
 #include "impl/predicate.hpp"
-#include "impl/random_scene.hpp"
+#include "formats/random_scene.hpp"
 #include "spec/rational.hpp"
 
 namespace circles::impl {
 namespace {
 
 using spec::Circles;
+using formats::random_scene;
 using spec::exact;
 using spec::Q;
 

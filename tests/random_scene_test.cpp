@@ -1,6 +1,6 @@
-// The benchmark scenes (impl/random_scene.hpp): their ranges, the coverage their square is sized for, the
+// The benchmark scenes (formats/random_scene.hpp): their ranges, the coverage their square is sized for, the
 // same doubles for a seed, and the exact messages for bad arguments.
-#include "impl/random_scene.hpp"
+#include "formats/random_scene.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,7 +16,7 @@
 
 #include "tests/thrown.hpp"
 
-namespace circles::impl {
+namespace circles::formats {
 namespace {
 
 using circles::testing::thrown;
@@ -139,4 +139,4 @@ TEST(random_scene, rejects_a_coverage_so_small_that_the_square_would_be_infinite
 }
 
 }  // namespace
-}  // namespace circles::impl
+}  // namespace circles::formats

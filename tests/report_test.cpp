@@ -1,8 +1,13 @@
-// The reports of `circles conform` for CI (cli/report.hpp, conform/merge.hpp): the verdict as JSON, read back by
-// nlohmann; as JUnit XML, read back by pugixml as CI servers read it (one <testcase> per family, a <failure> with the
-// counterexample); and the reports of shards merged into one.
+// The reports of `circles conform` for CI (conform/report_formats.hpp, conform/merge.hpp): the verdict as JSON,
+// read back by nlohmann; as JUnit XML, read back by pugixml as CI servers read it (one <testcase> per family, a
+// <failure> with the counterexample); and the reports of shards merged into one, by `circles report merge` in
+// every format.
 #include "cli/conform_report.hpp"
-#include "cli/report.hpp"
+#include "cli/merge_command.hpp"
+#include "conform/junit.hpp"
+#include "conform/merge.hpp"
+#include "conform/report.hpp"
+#include "conform/verdict_text.hpp"
 
 #include "conform/candidate.hpp"
 #include "engines/registry.hpp"
@@ -10,6 +15,7 @@
 #include "conform/interrupt.hpp"
 #include "spec/oracle.hpp"
 #include "tests/function_candidate.hpp"
+#include "tests/temp_dir.hpp"
 #include "tests/thrown.hpp"
 
 #include <gtest/gtest.h>
@@ -17,9 +23,11 @@
 #include <pugixml.hpp>
 
 #include <cmath>
+#include <fstream>
 #include <csignal>
 #include <sstream>
 #include <functional>
+#include <memory>
 #include <set>
 #include <string>
 #include <vector>
@@ -28,6 +36,9 @@ namespace circles::cli {
 namespace {
 
 using circles::testing::thrown;
+using conform::counterexample_text;
+using conform::json_report;
+using conform::junit_report;
 using conform::Options;
 using conform::Outcome;
 using conform::Verdict;
@@ -49,6 +60,12 @@ Verdict verdict_of(const std::function<Circles(const Circles&)>& step, std::uint
 }
 
 nlohmann::json json_of(const Verdict& v) { return nlohmann::json::parse(json_report(v, counterexample_text(v))); }
+
+// The reports `texts` merged, as the JSON report writes the merged verdict.
+std::string merge_reports(const std::vector<std::string>& texts, const std::vector<std::string>& names) {
+  const conform::Report merged = conform::merged_report(texts, names);
+  return json_report(merged.verdict, merged.text);
+}
 
 TEST(report, writes_a_conforming_verdict_as_json_with_the_cases_of_each_family) {
   const Verdict v = verdict_of(testing::right_step);
@@ -124,7 +141,7 @@ TEST(report, marks_an_interrupted_check_in_json_junit_and_the_merge_and_exits_12
       texts.push_back(report.dump());
       names.push_back(report["shard"]);
     }
-    return nlohmann::json::parse(conform::merge_reports(texts, names));
+    return nlohmann::json::parse(merge_reports(texts, names));
   };
   EXPECT_EQ(merged({conforming, interrupted})["verdict"], "interrupted");
   EXPECT_EQ(merged({conforming, interrupted})["error"], "interrupted by SIGINT");
@@ -196,7 +213,7 @@ TEST(report, merges_the_reports_of_shards_into_the_unsharded_runs_cases_and_verd
     shards.push_back(json_report(v, ""));
     names.push_back("shard " + std::to_string(3 - i));
   }
-  const nlohmann::json merged = nlohmann::json::parse(conform::merge_reports(shards, names));
+  const nlohmann::json merged = nlohmann::json::parse(merge_reports(shards, names));
   const nlohmann::json unsharded = json_of(whole);
   EXPECT_EQ(merged["verdict"], unsharded["verdict"]);
   EXPECT_EQ(merged["cases"], unsharded["cases"]);
@@ -209,14 +226,14 @@ TEST(report, merges_the_reports_of_shards_into_the_unsharded_runs_cases_and_verd
   early["verdict"] = late["verdict"] = "does not conform";
   early["counterexample"] = {{"case", 3}, {"family", "early"}};
   late["counterexample"] = {{"case", 40}, {"family", "late"}};
-  const nlohmann::json both = nlohmann::json::parse(conform::merge_reports({late.dump(), early.dump()}, {"late", "early"}));
+  const nlohmann::json both = nlohmann::json::parse(merge_reports({late.dump(), early.dump()}, {"late", "early"}));
   EXPECT_EQ(both["verdict"], "does not conform");
   EXPECT_EQ(both["counterexample"]["family"], "early");
   EXPECT_EQ(both["cases"], 2 * unsharded["cases"].get<int>());
   // Every family's counterexample, the one of its lowest case over the shards, in the families' order.
   early["counterexamples"] = {{{"case", 3}, {"family", "tangency"}}, {{"case", 40}, {"family", "lattice"}}};
   late["counterexamples"] = {{{"case", 20}, {"family", "lattice"}}, {{"case", 36}, {"family", "zero-radius"}}};
-  const nlohmann::json all = nlohmann::json::parse(conform::merge_reports({late.dump(), early.dump()}, {"late", "early"}));
+  const nlohmann::json all = nlohmann::json::parse(merge_reports({late.dump(), early.dump()}, {"late", "early"}));
   std::vector<std::pair<std::string, int>> merged_counterexamples;
   for (const nlohmann::json& c : all["counterexamples"]) merged_counterexamples.emplace_back(c["family"], c["case"]);
   EXPECT_EQ(merged_counterexamples,
@@ -236,7 +253,7 @@ TEST(report, reads_a_report_back_into_the_verdict_it_was_written_from) {
   EXPECT_EQ(read.text, counterexample_text(v));
   EXPECT_EQ(json_report(read.verdict, read.text), written);
   // Merged alone, a report keeps its verdict; a family the profile does not have is refused.
-  EXPECT_EQ(conform::merge_reports({written}, {"r.json"}), written);
+  EXPECT_EQ(merge_reports({written}, {"r.json"}), written);
   nlohmann::json other = nlohmann::json::parse(written);
   other["families"]["no-such-family"] = 1;
   const auto e = thrown<conform::ReportError>([&] { conform::read_report(other.dump(), "r.json"); });
@@ -250,7 +267,7 @@ TEST(report, refuses_to_merge_reports_of_different_runs_or_a_shard_twice) {
   other_seed["seed"] = 10;
   other_seed["shard"] = "1/2";
   const auto refusal = [](const std::vector<std::string>& texts) {
-    const auto e = thrown<conform::ReportError>([&] { conform::merge_reports(texts, {"a.json", "b.json"}); });
+    const auto e = thrown<conform::ReportError>([&] { merge_reports(texts, {"a.json", "b.json"}); });
     return e ? std::string(e->what()) : std::string("nothing thrown");
   };
   EXPECT_EQ(refusal({one.dump(), other_seed.dump()}),
@@ -270,7 +287,7 @@ TEST(report, refuses_to_merge_a_report_whose_keys_have_the_wrong_type_naming_the
     nlohmann::json other = json_of(verdict_of(testing::right_step, 1, 2));
     if (value.is_discarded()) other.erase(key);
     else other[key] = value;
-    const auto e = thrown<conform::ReportError>([&] { conform::merge_reports({one.dump(), other.dump()}, {"a.json", "b.json"}); });
+    const auto e = thrown<conform::ReportError>([&] { merge_reports({one.dump(), other.dump()}, {"a.json", "b.json"}); });
     return e ? std::string(e->what()) : std::string("nothing thrown");
   };
   const nlohmann::json missing = nlohmann::json::value_t::discarded;
@@ -341,20 +358,83 @@ TEST(report, merges_each_familys_status_across_shards_the_failure_first) {
   nlohmann::json b = json_of(verdict_of(testing::right_step, 1, 2));
   a["family_status"]["lattice"] = "expected failure";  // failed in one shard as the file says, passed in the other
   b["family_status"]["tangency"] = "skipped";
-  const nlohmann::json conforming = nlohmann::json::parse(conform::merge_reports({a.dump(), b.dump()}, {"a", "b"}));
+  const nlohmann::json conforming = nlohmann::json::parse(merge_reports({a.dump(), b.dump()}, {"a", "b"}));
   EXPECT_EQ(conforming["verdict"], "conforms");
   EXPECT_EQ(conforming["family_status"]["lattice"], "expected failure");
   EXPECT_EQ(conforming["family_status"]["tangency"], "passed");
   b["family_status"]["tangency"] = "unexpected pass";
   a["family_status"]["ulp-nudge"] = "failed";
   b["family_status"]["ulp-nudge"] = "expected failure";
-  const nlohmann::json failing = nlohmann::json::parse(conform::merge_reports({a.dump(), b.dump()}, {"a", "b"}));
+  const nlohmann::json failing = nlohmann::json::parse(merge_reports({a.dump(), b.dump()}, {"a", "b"}));
   EXPECT_EQ(failing["verdict"], "does not conform");
   EXPECT_EQ(failing["family_status"]["tangency"], "unexpected pass");
   EXPECT_EQ(failing["family_status"]["ulp-nudge"], "failed");
   b["family_status"]["lattice"] = "sideways";
-  EXPECT_EQ(std::string(thrown<conform::ReportError>([&] { conform::merge_reports({a.dump(), b.dump()}, {"a", "b"}); })->what()),
+  EXPECT_EQ(std::string(thrown<conform::ReportError>([&] { merge_reports({a.dump(), b.dump()}, {"a", "b"}); })->what()),
             "b: \"family_status\": lattice is \"sideways\", not a status of a family");
+}
+
+
+// `circles report merge --junit`: the merged verdict as JUnit XML beside the merged JSON, read back as CI servers
+// read it: the counterexample's failure in its family alone; every family an error when a shard was interrupted,
+// or when no shard could check; the exit status the merged verdict's.
+TEST(report, merge_writes_the_merged_verdict_as_junit_with_its_failures_and_its_errors) {
+  const testing::TempDir dir;
+  const auto merge = [&](const std::vector<nlohmann::json>& shards, int status) {
+    MergeCommandOptions options;
+    for (const nlohmann::json& shard : shards)
+      options.reports.push_back(dir.write("shard-" + std::to_string(options.reports.size()) + ".json", shard.dump()));
+    options.out = (dir.path / "merged.json").string();
+    options.formats["--junit"] = (dir.path / "merged.xml").string();
+    std::ostringstream said, err;
+    EXPECT_EQ(merge_command(options, said, err), status) << err.str();
+    std::ifstream in(options.formats["--junit"]);
+    const std::string xml((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    auto doc = std::make_unique<pugi::xml_document>();
+    EXPECT_TRUE(doc->load_string(xml.c_str())) << xml;
+    return doc;
+  };
+  const auto property = [](const pugi::xml_node suite, const char* name) {
+    return std::string(suite.child("properties").find_child_by_attribute("property", "name", name).attribute("value").value());
+  };
+
+  const Verdict failing = verdict_of(infinite_px, 1, 2);
+  ASSERT_EQ(failing.outcome, Outcome::does_not_conform) << failing.error;
+  const nlohmann::json passing = json_of(verdict_of(testing::right_step, 0, 2));
+  const auto failed = merge({passing, json_of(failing)}, 1);
+  const pugi::xml_node suite = failed->child("testsuites").child("testsuite");
+  EXPECT_EQ(property(suite, "verdict"), "does not conform");
+  EXPECT_EQ(property(suite, "shard"), "0,1/2");
+  EXPECT_EQ(property(suite, "cases"), std::to_string(passing["cases"].get<int>() + static_cast<int>(failing.cases)));
+  EXPECT_EQ(suite.attribute("tests").as_int(), 25);
+  EXPECT_EQ(suite.attribute("failures").as_int(), 1);
+  EXPECT_EQ(suite.attribute("errors").as_int(), 0);
+  const pugi::xml_node failure = suite.select_node("testcase/failure").node();
+  EXPECT_EQ(std::string(failure.parent().attribute("name").value()), failing.counterexample->family);
+  EXPECT_EQ(std::string(failure.child_value()), counterexample_text(failing));
+
+  nlohmann::json interrupted = passing;
+  interrupted["shard"] = "1/2";
+  interrupted["verdict"] = "interrupted";
+  interrupted["error"] = "interrupted by SIGTERM";
+  const auto cut = merge({passing, interrupted}, 2);
+  const pugi::xml_node cut_suite = cut->child("testsuites").child("testsuite");
+  EXPECT_EQ(property(cut_suite, "verdict"), "interrupted");
+  EXPECT_EQ(cut_suite.attribute("errors").as_int(), 25);
+  EXPECT_EQ(std::string(cut_suite.select_node("testcase/error").node().attribute("message").value()), "interrupted by SIGTERM");
+
+  nlohmann::json broken = passing;
+  broken["verdict"] = "cannot check";
+  broken["error"] = "the program crashed";
+  broken["cases"] = 0;
+  for (auto& [family, count] : broken["families"].items()) count = 0;
+  nlohmann::json other = broken;
+  other["shard"] = "1/2";
+  const auto unchecked = merge({broken, other}, 2);
+  const pugi::xml_node unchecked_suite = unchecked->child("testsuites").child("testsuite");
+  EXPECT_EQ(property(unchecked_suite, "verdict"), "cannot check");
+  EXPECT_EQ(unchecked_suite.attribute("errors").as_int(), 25);
+  EXPECT_EQ(std::string(unchecked_suite.select_node("testcase/error").node().attribute("type").value()), "cannot check");
 }
 
 }  // namespace

@@ -4,7 +4,7 @@
 // chosen, from readings given and from the machine with its cores made busy.
 #include "impl/engine.hpp"
 #include "impl/exact_engine.hpp"
-#include "impl/random_scene.hpp"
+#include "formats/random_scene.hpp"
 #include "impl/threads.hpp"
 
 #include <gtest/gtest.h>
@@ -97,7 +97,7 @@ unsigned online_cores() { return static_cast<unsigned>(sysconf(_SC_NPROCESSORS_O
 TEST(threads, with_every_core_busy_the_engines_of_a_big_world_step_on_one_thread) {
   const BusyProcesses busy(online_cores());
   ASSERT_EQ(busy.size(), online_cores());
-  const World w(impl::random_scene(20'000, 0.1, 1));
+  const World w(formats::random_scene(20'000, 0.1, 1));
   DoubleEngine engine(w);
   EXPECT_EQ(engine.threads(), 1u);
   ASSERT_TRUE(engine.thread_count().load());

@@ -1,4 +1,4 @@
-// `circles vectors` (cli/vectors.hpp): each vector is checked against references other than the oracle that
+// `circles vectors` (cli/vectors_command.hpp): each vector is checked against references other than the oracle that
 // made it: the next world against impl::step_all_pairs, the exact next world against the input moved by its
 // new velocity, the hashes against FNV-1a written out here byte by byte, the hex forms against strtod, the
 // features against impl::intersect_exact. examples/python/check_vectors.py checks the same file in another
@@ -7,7 +7,7 @@
 #include "formats/json_number.hpp"
 #include "cli/run.hpp"
 #include "formats/scene.hpp"
-#include "cli/vectors.hpp"
+#include "cli/vectors_command.hpp"
 #include "impl/engine.hpp"
 #include "impl/predicate.hpp"
 #include "tests/temp_dir.hpp"
@@ -28,6 +28,18 @@
 
 namespace circles::cli {
 namespace {
+
+using conform::case_worlds;
+using conform::kVectorsFile;
+using conform::make_vector;
+using conform::VectorsOptions;
+using conform::VectorsSummary;
+using conform::write_vectors;
+using formats::doubles_of;
+using formats::format_vector;
+using formats::load_scene;
+using formats::Vector;
+using spec::Circles;
 
 namespace fs = std::filesystem;
 using json = nlohmann::json;
@@ -103,7 +115,7 @@ spec::Q fraction_of(const std::string& text) {
 }
 
 // FNV-1a over the fields' bytes, least significant first, −0 as +0: docs/vectors.md's definition, written
-// out apart from impl/state_hash.cpp.
+// out apart from formats/state_hash.cpp.
 std::string fnv1a(const Circles& w) {
   std::uint64_t h = 14695981039346656037u;  // 0xcbf29ce484222325
   for (const auto& c : w)

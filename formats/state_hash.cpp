@@ -1,8 +1,8 @@
-#include "impl/state_hash.hpp"
+#include "formats/state_hash.hpp"
 
 #include <bit>
 
-namespace circles::impl {
+namespace circles::formats {
 
 void StateHash::add(std::span<const spec::CircleDoubles> world) noexcept {
   for (const spec::CircleDoubles& circle : world)
@@ -22,4 +22,4 @@ std::uint64_t state_hash(std::span<const spec::CircleDoubles> world) noexcept {
   return h.value();
 }
 
-}  // namespace circles::impl
+}  // namespace circles::formats

@@ -1,16 +1,13 @@
-#include "cli/report.hpp"
+#include "conform/junit.hpp"
 
-#include "cli/counted.hpp"
-#include "formats/output_file.hpp"
+#include "conform/verdict_text.hpp"
+#include "formats/counted.hpp"
 #include "formats/xml_text.hpp"
 
-namespace circles::cli {
+namespace circles::conform {
 namespace {
 
-using conform::Counterexample;
-using conform::FamilyResult;
-using conform::FamilyStatus;
-using conform::Verdict;
+using formats::counted;
 
 std::string xml(const std::string& s) { return formats::xml_text(s); }
 
@@ -28,8 +25,8 @@ std::string junit_report(const Verdict& v, const std::string& text) {
                                                                        : nullptr;
     if (f.status == FamilyStatus::failed && c) {
       ++failures;
-      const std::string body = f.has_counterexample ? text : conform::counterexample_summary(*c);
-      cases += "      <failure type=\"does not conform\" message=\"" + xml(conform::difference_line(*c)) + "\">" + xml(body) + "</failure>\n";
+      const std::string body = f.has_counterexample ? text : counterexample_summary(*c);
+      cases += "      <failure type=\"does not conform\" message=\"" + xml(difference_line(*c)) + "\">" + xml(body) + "</failure>\n";
     } else if (f.status == FamilyStatus::unexpected_pass) {
       ++failures;
       const std::string why = "unexpected pass: the expectation file lists " + family +
@@ -37,41 +34,35 @@ std::string junit_report(const Verdict& v, const std::string& text) {
       cases += "      <failure type=\"unexpected pass\" message=\"" + xml(why) + "\">" + xml(why) + "</failure>\n";
     } else if (f.status == FamilyStatus::expected_failure) {
       ++skipped;
-      cases += "      <skipped message=\"" + xml("expected failure" + (c ? ": " + conform::difference_line(*c) : std::string())) + "\"/>\n";
+      cases += "      <skipped message=\"" + xml("expected failure" + (c ? ": " + difference_line(*c) : std::string())) + "\"/>\n";
     } else if (f.status == FamilyStatus::skipped) {
       ++skipped;
       cases += "      <skipped message=\"skipped: left out by --families or --skip-families\"/>\n";
-    } else if ((v.outcome == conform::Outcome::cannot_check && f.checked == 0) || v.outcome == conform::Outcome::interrupted) {
+    } else if ((v.outcome == Outcome::cannot_check && f.checked == 0) || v.outcome == Outcome::interrupted) {
       // A run that could not check: an error in each family it did not check. A run that a signal interrupted
       // checked no family to its share of the cases: an error in each that did not fail.
       ++errors;
       cases += "      <error type=\"" + std::string(name(v.outcome)) + "\" message=\"" + xml(v.error) + "\">" + xml(v.error) +
                "</error>\n";
-    } else if (f.status == conform::FamilyStatus::not_reached) {
+    } else if (f.status == FamilyStatus::not_reached) {
       ++skipped;
       cases += "      <skipped message=\"not reached: the run stopped at its counterexample\"/>\n";
     }
     cases += "      <system-out>" + counted(f.checked, "case") + " checked</system-out>\n    </testcase>\n";
   }
-  const conform::Options& o = v.options;
+  const Options& o = v.options;
   const std::string counts = "tests=\"" + std::to_string(v.families.size()) + "\" failures=\"" + std::to_string(failures) +
                              "\" errors=\"" + std::to_string(errors) + "\" skipped=\"" + std::to_string(skipped) +
-                             "\" time=\"" + conform::elapsed_text(v) + "\"";
+                             "\" time=\"" + elapsed_text(v) + "\"";
   return "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"circles conform\" " + counts + ">\n" +
          "  <testsuite name=\"" + xml("circles conform: " + v.candidate) + "\" " + counts + ">\n    <properties>\n" +
          "      <property name=\"verdict\" value=\"" + xml(name(v.outcome)) + "\"/>\n" +
          "      <property name=\"seed\" value=\"" + std::to_string(o.seed) + "\"/>\n" +
-         "      <property name=\"shard\" value=\"" + conform::shard_text(v) + "\"/>\n" +
+         "      <property name=\"shard\" value=\"" + shard_text(v) + "\"/>\n" +
          "      <property name=\"level\" value=\"" + xml(o.level.text()) + "\"/>\n" +
          "      <property name=\"profile\" value=\"" + properties::name(o.profile) + "\"/>\n" +
          "      <property name=\"cases\" value=\"" + std::to_string(v.cases) + "\"/>\n    </properties>\n" + cases +
          "  </testsuite>\n</testsuites>\n";
 }
 
-void write_report(const std::string& path, const std::string& what, const std::string& text) {
-  formats::OutputFile file(path, what + " " + path);
-  file.write(text);
-  file.commit();
-}
-
-}  // namespace circles::cli
+}  // namespace circles::conform

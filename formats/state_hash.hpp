@@ -15,7 +15,7 @@
 #include <cstdint>
 #include <span>
 
-namespace circles::impl {
+namespace circles::formats {
 
 inline constexpr std::uint64_t kFnvOffsetBasis = 0xcbf29ce484222325;  // FNV-1a 64-bit parameters
 inline constexpr std::uint64_t kFnvPrime = 0x100000001b3;
@@ -34,4 +34,4 @@ class StateHash {
 // state_hash(world) = FNV-1a of bytes(world).
 std::uint64_t state_hash(std::span<const spec::CircleDoubles> world) noexcept;
 
-}  // namespace circles::impl
+}  // namespace circles::formats

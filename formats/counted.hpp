@@ -5,10 +5,10 @@
 #include <cstdint>
 #include <string>
 
-namespace circles::cli {
+namespace circles::formats {
 
 inline std::string counted(std::uint64_t n, const std::string& noun, const std::string& plural = "") {
   return std::to_string(n) + " " + (n == 1 ? noun : plural.empty() ? noun + "s" : plural);
 }
 
-}  // namespace circles::cli
+}  // namespace circles::formats

@@ -16,7 +16,7 @@
 #include <cstddef>
 #include <cstdint>
 
-namespace circles::impl {
+namespace circles::formats {
 
 inline constexpr double kSceneMinRadius = 2;
 inline constexpr double kSceneMaxRadius = 6;
@@ -29,4 +29,4 @@ inline constexpr double kSceneMaxSpeed = 100;
 // included), or when coverage is so small that the side overflows to infinity.
 spec::Circles random_scene(std::size_t n, double coverage, std::uint64_t seed);
 
-}  // namespace circles::impl
+}  // namespace circles::formats

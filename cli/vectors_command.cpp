@@ -1,6 +1,6 @@
-#include "cli/vectors.hpp"
+#include "cli/vectors_command.hpp"
 
-#include "cli/counted.hpp"
+#include "formats/counted.hpp"
 #include "cli/options.hpp"
 #include "formats/output_file.hpp"
 #include "formats/scene.hpp"
@@ -10,6 +10,13 @@
 #include <vector>
 
 namespace circles::cli {
+
+using conform::VectorsError;
+using conform::VectorsOptions;
+using conform::VectorsSummary;
+using formats::counted;
+using formats::output_name;
+using formats::SceneError;
 
 CLI::App* add_vectors_command(CLI::App& app, VectorsOptions& options) {
   CLI::App* vectors = app.add_subcommand(

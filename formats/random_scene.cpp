@@ -1,5 +1,5 @@
 // The benchmark scenes; the draws and their order are stated in random_scene.hpp.
-#include "impl/random_scene.hpp"
+#include "formats/random_scene.hpp"
 
 #include <charconv>
 #include <cmath>
@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace circles::impl {
+namespace circles::formats {
 namespace {
 
 // The shortest decimal that reads back as x ("0.1", "1.5", "nan"), so a message shows what the caller passed.
@@ -55,4 +55,4 @@ spec::Circles random_scene(std::size_t n, double coverage, std::uint64_t seed) {
   return scene;
 }
 
-}  // namespace circles::impl
+}  // namespace circles::formats
