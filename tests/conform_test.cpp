@@ -491,8 +491,9 @@ TEST(conform, refuses_a_save_directory_it_cannot_use_before_any_case) {
 class CrashesAfterItsFirstWrongAnswer : public FunctionCandidate {
  public:
   CrashesAfterItsFirstWrongAnswer() : FunctionCandidate(strict_intersect_step) {}
-  Answers answer_all(std::span<const Circles> worlds, std::uint64_t first_id) override {
-    Answers read = Candidate::answer_all(worlds, first_id);
+  Answers answer_all(std::span<const Circles> worlds, std::uint64_t first_id,
+                     std::span<const Spelling> spellings = {}) override {
+    Answers read = Candidate::answer_all(worlds, first_id, spellings);
     for (std::size_t i = 0; i + 1 < read.answers.size(); ++i) {
       const auto expected = properties::expected_step(worlds[i], Profile::resolved);
       if (std::holds_alternative<Circles>(expected) && std::get<Circles>(expected) != read.answers[i]) {
