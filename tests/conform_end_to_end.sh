@@ -49,6 +49,12 @@ rejects_a_gallery_entry_with_exit_1)
   shift 2
   run_conform 1 --exec "$gallery $entry" "$@"
   ;;
+rejects_a_wrong_number_reader_with_exit_1)
+  # ARGS: KIND. tests/wrong_reader_candidate.py KIND, the exact step behind a reader that reads some spellings of
+  # docs/protocol.md wrong: default options (a random seed, printed), and the counterexample is the wire family's.
+  run_conform 1 --exec "python3 $source_dir/tests/wrong_reader_candidate.py $1"
+  grep -q "(family wire)" "$dir/out" || fail "not caught by the wire family: $(cat "$dir/out")"
+  ;;
 gallery_candidate_exits_2_listing_the_entries_for_an_unknown_name)
   # ARGS: GALLERY_CANDIDATE.
   expect_exit 2 sh -c '"$1" no-such-mistake </dev/null >"$2" 2>&1' sh "$1" "$dir/out"
