@@ -8,6 +8,7 @@
 #include "formats/protocol.hpp"
 #include "spec/rational.hpp"
 #include "tests/double_samples.hpp"
+#include "tests/repository.hpp"
 
 #include <gtest/gtest.h>
 
@@ -26,8 +27,14 @@ namespace {
 using spec::Q;
 using spec::Z;
 
-// docs/protocol.md, Numbers: a request's number token.
-const std::regex kRequestNumber(R"(-?(0|[1-9][0-9]*)(\.[0-9]+)?([eE][+-]?[0-9]+)?)");
+// docs/protocol.md, The grammar of a number: the expression in the code block after its marker.
+std::string request_number_in_protocol_md() {
+  const std::vector<std::string> lines = testing::lines_of("docs/protocol.md");
+  const auto marker = std::find(lines.begin(), lines.end(), "<!-- request-number -->");
+  if (marker == lines.end() || lines.end() - marker < 3 || marker[1] != "```") return "no expression";
+  return marker[2];
+}
+const std::regex kRequestNumber(request_number_in_protocol_md());
 
 // The exact value of a token of that grammar.
 Q exact_value(const std::string& token) {
@@ -69,6 +76,32 @@ TEST(spelling, every_spelling_is_a_request_number_whose_exact_value_rounds_to_th
       EXPECT_EQ(std::strtod(s.c_str(), nullptr), x) << s;
     }
   }
+}
+
+// Our reader follows the grammar: it reads a token the expression matches, and refuses each token the page names
+// as not a number, and one beyond the range.
+TEST(spelling, our_reader_reads_the_tokens_of_the_grammar_of_protocol_md_and_refuses_the_others) {
+  EXPECT_EQ(request_number_in_protocol_md(), R"(-?(0|[1-9][0-9]*)(\.[0-9]+)?([eE][+-]?[0-9]+)?)");
+  const auto reads = [](const std::string& token) {
+    try {
+      parse_line("{\"id\": 1, \"circles\": [[" + token + ", 0, 0, 0, 1]]}", 1);
+      return true;
+    } catch (const ProtocolError&) {
+      return false;
+    }
+  };
+  for (const std::string token : {"0", "-0", "0.0", "1E+0007", "1e-400", "-1e-400", "0e999999", "9007199254740993",
+                                  "18446744073709551617", "1.7976931348623157e308", "123456789012345678901234567890e-300"}) {
+    EXPECT_TRUE(std::regex_match(token, kRequestNumber)) << token;
+    EXPECT_TRUE(reads(token)) << token;
+  }
+  for (const std::string token : {"+1", "01", "-01", ".5", "1.", "1e", "1e+", "0x10", "NaN", "Infinity", "-Infinity",
+                                  "nan", "inf", "--1", "1e1.5"}) {
+    EXPECT_FALSE(std::regex_match(token, kRequestNumber)) << token;
+    EXPECT_FALSE(reads(token)) << token;
+  }
+  EXPECT_TRUE(std::regex_match(std::string("1e309"), kRequestNumber));
+  EXPECT_FALSE(reads("1e309"));  // a number, but beyond the double range
 }
 
 // Each form docs/protocol.md names is spelled: an exponent with E and with e+, leading zeros in it, an integer
