@@ -28,11 +28,11 @@ enum class Spelling { shortest, every_form };
 // The distinct spellings of x, the first json_number::append's. x must be finite (std::domain_error).
 std::vector<std::string> spellings(double x);
 
-// The longest spelling of any double: a sign, the 768 significant digits of a midpoint between two subnormals
-// (an odd multiple of 2^-1075 below 2^-1022; a double's own exact value has at most 767), four more digits, a
-// point, and an exponent "e-308": 1 + 768 + 4 + 1 + 5 = 779; a fixed form is used only for decimal exponents
-// within ±kFixedDigits, whose longest is shorter. tests/spelling_test.cpp recomputes it over the doubles whose
-// spellings are longest.
+// The longest spelling of any double: a sign, the 768 significant digits of a midpoint below 2^-1021 (an odd
+// multiple of 2^-1075 above 10^-308: 1075 decimal places, the first 307 zeros; a double's own exact value has at
+// most 767, and a larger double's midpoint has fewer places), four more digits, a point, and an exponent
+// "e-308": 1 + 768 + 4 + 1 + 5 = 779; a fixed form is used only for decimal exponents within ±kFixedDigits,
+// whose longest is shorter. tests/spelling_test.cpp recomputes it over the doubles whose spellings are longest.
 inline constexpr std::size_t kMaxSpellingChars = 779;
 // Decimal exponents (of the first significant digit) within ±kFixedDigits are also written without an exponent.
 inline constexpr int kFixedDigits = 24;
