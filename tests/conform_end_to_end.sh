@@ -51,9 +51,11 @@ rejects_a_gallery_entry_with_exit_1)
   ;;
 rejects_a_wrong_number_reader_with_exit_1)
   # ARGS: KIND. tests/wrong_reader_candidate.py KIND, the exact step behind a reader that reads some spellings of
-  # docs/protocol.md wrong: default options (a random seed, printed), and the counterexample is the wire family's.
+  # docs/protocol.md wrong: default options (a random seed, printed), and the counterexample is the wire family's,
+  # whose requests alone hold an E or a number that underflows. A reader that cuts digits to 17 may be caught
+  # earlier: our shortest form of an integer above 10^17 (110680464442257309696.0) has more than 17 digits too.
   run_conform 1 --exec "python3 $source_dir/tests/wrong_reader_candidate.py $1"
-  grep -q "(family wire)" "$dir/out" || fail "not caught by the wire family: $(cat "$dir/out")"
+  [ "$1" = truncate-17 ] || grep -q "(family wire)" "$dir/out" || fail "not caught by the wire family: $(cat "$dir/out")"
   ;;
 gallery_candidate_exits_2_listing_the_entries_for_an_unknown_name)
   # ARGS: GALLERY_CANDIDATE.
