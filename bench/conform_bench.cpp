@@ -102,11 +102,12 @@ class Relay : public conform::Candidate {
     return std::move(answer_all(std::span(&world, 1), id).all().front());
   }
   // Passed on whole, so that a process candidate gets conform's batches as conform sends them.
-  conform::Answers answer_all(std::span<const Circles> worlds, std::uint64_t first_id) override {
+  conform::Answers answer_all(std::span<const Circles> worlds, std::uint64_t first_id,
+                              std::span<const conform::Spelling> spellings = {}) override {
     requests += worlds.size();
     batches.push_back(worlds.size());
     if (record_) record_->insert(record_->end(), worlds.begin(), worlds.end());
-    return inner_.answer_all(worlds, first_id);
+    return inner_.answer_all(worlds, first_id, spellings);
   }
   std::string name() const override { return inner_.name(); }
   std::uint64_t requests = 0;

@@ -313,7 +313,7 @@ std::vector<Circles> Answers::all() && {
   return std::move(answers);
 }
 
-Answers Candidate::answer_all(std::span<const Circles> worlds, std::uint64_t first_id) {
+Answers Candidate::answer_all(std::span<const Circles> worlds, std::uint64_t first_id, std::span<const Spelling>) {
   throw_if_interrupted();
   Answers read;
   read.answers.reserve(worlds.size());
@@ -325,7 +325,8 @@ Answers Candidate::answer_all(std::span<const Circles> worlds, std::uint64_t fir
   return read;
 }
 
-Answers ProcessCandidate::answer_all(std::span<const Circles> worlds, std::uint64_t first_id) {
+Answers ProcessCandidate::answer_all(std::span<const Circles> worlds, std::uint64_t first_id,
+                                     std::span<const Spelling> spellings) {
   // After a fault, what the program wrote to earlier requests may still be on its way: a fresh program, so that
   // no answer is ever taken for another request's. Then a program that crashed, hung or broke the protocol
   // on one world is asked about the next from a clean start (as shrinking asks).
@@ -333,7 +334,7 @@ Answers ProcessCandidate::answer_all(std::span<const Circles> worlds, std::uint6
   Answers read;
   read.answers.reserve(worlds.size());
   try {
-    answer_batches(worlds, first_id, read.answers);
+    answer_batches(worlds, first_id, spellings, read.answers);
   } catch (const BrokenCandidate& e) {
     read.broken = e;
   }
@@ -341,7 +342,7 @@ Answers ProcessCandidate::answer_all(std::span<const Circles> worlds, std::uint6
 }
 
 void ProcessCandidate::answer_batches(std::span<const Circles> worlds, std::uint64_t first_id,
-                                      std::vector<Circles>& answers) {
+                                      std::span<const Spelling> spellings, std::vector<Circles>& answers) {
   std::string lines;
   std::vector<std::size_t> ends;  // the offset just past each request line in `lines`
   for (std::size_t first = 0; first < worlds.size();) {
@@ -351,7 +352,10 @@ void ProcessCandidate::answer_batches(std::span<const Circles> worlds, std::uint
     std::size_t last = first;
     for (; last < worlds.size(); ++last) {
       const std::size_t before = lines.size();
-      lines += format_line(kId, first_id + last, worlds[last]);
+      if (!spellings.empty() && spellings[last] == Spelling::every_form)
+        formats::append_spelled_line(lines, kId, first_id + last, worlds[last]);
+      else
+        formats::append_line(lines, kId, first_id + last, worlds[last]);
       lines += '\n';
       if (last > first && lines.size() > kBatchBytes) {
         lines.resize(before);

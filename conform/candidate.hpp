@@ -15,6 +15,7 @@
 #include "engines/registry.hpp"
 #include "formats/plain_line.hpp"
 #include "formats/protocol.hpp"
+#include "formats/spelling.hpp"
 
 #include <chrono>
 #include <cstdint>
@@ -37,6 +38,7 @@ using formats::Reading;
 using formats::parse_line;
 using formats::format_line;
 using formats::kId;
+using formats::Spelling;
 
 // What a candidate did instead of answering a request: it exited or was killed (exited), gave no answer within
 // its deadline (hung), or wrote a malformed line, a wrong id or a wrong number of circles (malformed); or
@@ -96,8 +98,11 @@ class Candidate {
   // The answers to worlds[k] asked as request first_id + k, in order: what answer() gives for each in turn,
   // but a candidate may be sent several requests before it answers the first (ProcessCandidate is). Stops at
   // the first request it cannot answer, with the BrokenCandidate in `broken`; this loop of answer() asks none
-  // after it.
-  virtual Answers answer_all(std::span<const Circles> worlds, std::uint64_t first_id);
+  // after it. `spellings`, empty or one per world, says how a request line spells each world's numbers
+  // (formats/spelling.hpp; empty: every one the shortest way); a candidate in process reads no text and
+  // ignores it.
+  virtual Answers answer_all(std::span<const Circles> worlds, std::uint64_t first_id,
+                             std::span<const Spelling> spellings = {});
   // The end of the input: the candidate must exit 0 (a process) or simply stop. Throws BrokenCandidate.
   virtual void finish() {}
   // "the double engine", "the program `python3 step.py`": for messages.
@@ -142,7 +147,8 @@ class ProcessCandidate : public Candidate {
   // answers, each within the deadline of the previous answer (or of the batch's last write). Answers are read
   // as Reading::answer reads them (formats/protocol.hpp): unknown keys ignored, NaN and infinities as values.
   // Restarts the program first if it stopped or a request before has no answer read (a fault in a batch).
-  Answers answer_all(std::span<const Circles> worlds, std::uint64_t first_id) override;
+  Answers answer_all(std::span<const Circles> worlds, std::uint64_t first_id,
+                     std::span<const Spelling> spellings = {}) override;
   // Closes the program's stdin and waits, up to the deadline, for it to exit 0.
   void finish() override;
   std::string name() const override { return "the program `" + command_ + "`"; }
@@ -182,7 +188,8 @@ class ProcessCandidate : public Candidate {
   void restart();
   // answer_all's work: appends the answer to each of worlds, in batches of at most kBatchBytes; throws
   // BrokenCandidate at the first request without an answer.
-  void answer_batches(std::span<const Circles> worlds, std::uint64_t first_id, std::vector<Circles>& answers);
+  void answer_batches(std::span<const Circles> worlds, std::uint64_t first_id, std::span<const Spelling> spellings,
+                      std::vector<Circles>& answers);
   // The next line the program writes, without its newline, or BrokenCandidate at the deadline, at EOF or as
   // soon as the line is longer than `longest` bytes.
   std::string read_line(std::uint64_t id, std::chrono::milliseconds deadline, std::size_t longest);

@@ -9,19 +9,22 @@
 
 namespace circles::conform {
 
-std::optional<properties::ChainFailure> Checker::run(const Circles& w, std::uint64_t steps, Chain::Ending& ending) {
+std::optional<properties::ChainFailure> Checker::run(const Circles& w, std::uint64_t steps, Chain::Ending& ending,
+                                                     Spelling spelling) {
   Chain chain(w, steps, options_.level);
-  run_all(std::span(&chain, 1));
+  run_all(std::span(&chain, 1), std::span(&spelling, 1));
   ending = chain.ending();
   return std::move(chain.failure());
 }
 
-std::size_t Checker::run_all(std::span<Chain> chains) {
+std::size_t Checker::run_all(std::span<Chain> chains, std::span<const Spelling> spellings) {
   std::vector<Circles> asked, expected;
+  std::vector<Spelling> spelled;
   std::vector<std::size_t> whose;  // asked[i] is the next step of chains[whose[i]]
   for (std::size_t first = 0; first < chains.size();) {
     asked.clear();
     expected.clear();
+    spelled.clear();
     whose.clear();
     std::size_t next = chains.size();  // where the next batch starts: the chain that goes on, if any
     for (std::size_t k = first; k < chains.size(); ++k) {
@@ -34,6 +37,7 @@ std::size_t Checker::run_all(std::span<Chain> chains) {
         continue;
       }
       asked.push_back(chain.input());
+      spelled.push_back(spellings.empty() ? Spelling::shortest : spellings[k]);
       expected.push_back(std::move(std::get<Circles>(reference)));
       whose.push_back(k);
       if (chain.goes_on_after_next()) {  // its next request waits for this answer
@@ -42,7 +46,7 @@ std::size_t Checker::run_all(std::span<Chain> chains) {
       }
     }
     if (asked.empty()) break;
-    Answers read = candidate_.answer_all(asked, next_id_);
+    Answers read = candidate_.answer_all(asked, next_id_, spelled);
     std::vector<Circles>& answers = read.answers;
     next_id_ += asked.size();
     // The answers before a fault are judged first: a wrong one is the counterexample the sequential run
@@ -80,11 +84,12 @@ std::vector<std::pair<std::size_t, std::size_t>> Jobs::units(std::size_t n) cons
 namespace {
 
 // One unit's chains on one checker: up to the first failing chain, or with `all`, every one.
-UnitOutcome run_unit(Checker& checker, std::span<Chain> chains, bool all) {
+UnitOutcome run_unit(Checker& checker, std::span<Chain> chains, bool all, std::span<const Spelling> spellings) {
   UnitOutcome outcome;
   try {
     for (std::size_t from = 0; from < chains.size();) {
-      const std::size_t failed = from + checker.run_all(chains.subspan(from));
+      const std::size_t failed =
+          from + checker.run_all(chains.subspan(from), spellings.empty() ? spellings : spellings.subspan(from));
       if (failed == chains.size()) break;
       outcome.failed.push_back(failed);
       if (!all) break;
@@ -99,7 +104,7 @@ UnitOutcome run_unit(Checker& checker, std::span<Chain> chains, bool all) {
 }  // namespace
 
 std::vector<UnitOutcome> Jobs::run(std::span<Chain> chains, std::span<const std::pair<std::size_t, std::size_t>> units,
-                                   bool all) {
+                                   bool all, std::span<const Spelling> spellings) {
   std::vector<UnitOutcome> outcomes(units.size());
   // The copies this stage needs, started once; a candidate that cannot be copied keeps to one job.
   const std::size_t wanted = std::min<std::size_t>(jobs_, units.size());
@@ -112,8 +117,11 @@ std::vector<UnitOutcome> Jobs::run(std::span<Chain> chains, std::span<const std:
   const std::size_t workers = std::min(wanted, checkers_.size());
   std::atomic<std::size_t> next{0};
   const auto work = [&](Checker& checker) {
-    for (std::size_t u; (u = next++) < units.size();)
-      outcomes[u] = run_unit(checker, chains.subspan(units[u].first, units[u].second - units[u].first), all);
+    for (std::size_t u; (u = next++) < units.size();) {
+      const auto [from, to] = units[u];
+      outcomes[u] = run_unit(checker, chains.subspan(from, to - from), all,
+                             spellings.empty() ? spellings : spellings.subspan(from, to - from));
+    }
   };
   if (workers <= 1) {
     work(first());

@@ -23,8 +23,10 @@ class Checker {
  public:
   Checker(Candidate& candidate, const Options& options) : candidate_(candidate), options_(options) {}
 
-  // Chains `steps` steps from w; `ending` says how the chain ended. Throws BrokenCandidate.
-  std::optional<properties::ChainFailure> run(const Circles& w, std::uint64_t steps, Chain::Ending& ending);
+  // Chains `steps` steps from w, each request spelled as `spelling` says; `ending` says how the chain ended.
+  // Throws BrokenCandidate.
+  std::optional<properties::ChainFailure> run(const Circles& w, std::uint64_t steps, Chain::Ending& ending,
+                                              Spelling spelling = Spelling::shortest);
 
   // Runs the chains as run() would run them one after another, up to the first that fails: returns its index
   // (its `failure` set), or chains.size() if none does. The candidate is asked in batches
@@ -33,7 +35,8 @@ class Checker {
   // candidate gets the sequential run's requests in the same order, with the same ids (a step that carries
   // state from one request to the next is caught as before), plus, after a failing request, the rest of its
   // batch, whose answers are read and not judged. Throws BrokenCandidate after judging the answers before it.
-  std::size_t run_all(std::span<Chain> chains);
+  // `spellings`, empty or one per chain, says how each chain's requests are spelled (Candidate::answer_all).
+  std::size_t run_all(std::span<Chain> chains, std::span<const Spelling> spellings = {});
 
  private:
   Candidate& candidate_;
@@ -64,9 +67,10 @@ class Jobs {
   // they are fewer than n, so that every job has one.
   std::vector<std::pair<std::size_t, std::size_t>> units(std::size_t n) const;
   // Runs each unit [from, to) of `chains` on one job, the jobs at once; `all`: every failing chain of a unit
-  // (--keep-going), else its first. Returns the units' outcomes, in order.
+  // (--keep-going), else its first; `spellings` as Checker::run_all takes them. Returns the units' outcomes, in
+  // order.
   std::vector<UnitOutcome> run(std::span<Chain> chains, std::span<const std::pair<std::size_t, std::size_t>> units,
-                               bool all);
+                               bool all, std::span<const Spelling> spellings = {});
   // Each copy's Candidate::finish (the candidate's own is the caller's). Throws BrokenCandidate.
   void finish();
 

@@ -97,6 +97,11 @@ bool same_kind(const Failure& a, const Failure& b) {
   return std::isfinite(x) == std::isfinite(y) && (std::isfinite(x) || x == y);
 }
 
+// How the requests of a family's cases spell their numbers (the wire family's every way, the others' shortest).
+Spelling spelling_of(properties::Family family) {
+  return properties::row(family).spelled ? Spelling::every_form : Spelling::shortest;
+}
+
 // Case c's family and generator: the families of the profile in turn.
 class Cases {
  public:
@@ -293,7 +298,8 @@ class Run {
       FamilyResult* result = result_of(stored.family);
       if (result && (skipped(result->family) || result->status == FamilyStatus::failed)) continue;
       Ending ending = Ending::checked;
-      std::optional<Failure> failure = jobs_.first().run(stored.world, options_.steps, ending);
+      std::optional<Failure> failure = jobs_.first().run(
+          stored.world, options_.steps, ending, result ? spelling_of(result->family) : Spelling::shortest);
       if (ending == Ending::no_reference_at_w0) {
         ++verdict_.not_replayed;
         continue;
@@ -374,14 +380,17 @@ class Run {
   // --keep-going). A candidate that broke is reported after the cases before it are counted.
   bool run_stage(std::vector<Case>& stage) {
     std::vector<Chain> chains;
+    std::vector<Spelling> spellings;
     chains.reserve(stage.size());
-    for (const Case& c : stage)
+    for (const Case& c : stage) {
       // At least as far as the family's boundary: tangent-after-step's tangency is decided at the second step.
       chains.emplace_back(c.world.value(),
                           std::max(options_.steps, properties::steps_to_decide(cases_.families()[c.family])),
                           options_.level);
+      spellings.push_back(spelling_of(cases_.families()[c.family]));
+    }
     const auto units = jobs_.units(chains.size());
-    std::vector<UnitOutcome> outcomes = jobs_.run(chains, units, options_.keep_going);
+    std::vector<UnitOutcome> outcomes = jobs_.run(chains, units, options_.keep_going, spellings);
     for (std::size_t u = 0; u < units.size(); ++u) {
       const auto [from, to] = units[u];
       std::size_t k = from;
@@ -492,6 +501,7 @@ class Run {
   void shrink(rc::Shrinkable<Circles> world, std::uint64_t c, std::size_t family, std::optional<std::size_t> circles,
               std::uint64_t steps, Failure failure) {
     const std::span<const properties::Family> families = cases_.families();
+    shrink_spelling_ = spelling_of(families[family]);
     Counterexample counterexample;
     counterexample.shrink_path = {world.value()};
     counterexample.circles_before = world.value().size();
@@ -554,7 +564,7 @@ class Run {
     Ending e = Ending::checked;
     std::optional<Failure> f;
     try {
-      f = jobs_.first().run(w, steps, e);
+      f = jobs_.first().run(w, steps, e, shrink_spelling_);
     } catch (const BrokenCandidate&) {
       return std::nullopt;
     } catch (const Interrupted&) {
@@ -650,6 +660,7 @@ class Run {
   std::vector<rc::Random> randoms_;
   std::vector<Failing> failing_;  // the first failing case of each family that fails, in case order
   std::chrono::steady_clock::time_point shrink_until_{};  // when shrinking the counterexample at hand stops
+  Spelling shrink_spelling_ = Spelling::shortest;         // how the requests of the case being shrunk are spelled
 };
 
 }  // namespace

@@ -60,6 +60,7 @@ enum class Family {
   cancellation,
   signed_zeros,
   zero_radius,
+  wire,
   sizes,
   crowds,
   cell_crowds,
@@ -81,6 +82,8 @@ struct FamilyRow {
   const char* name;     // a short name, for reports and RC_TAG: "tangency", "tie-p-vx", "square-overflow"
   bool literal;         // drawn in the literal profile too (false: resolved only, outside the seed's domain)
   bool big;             // worlds of hundreds to thousands of circles (gen::big_world), resolved only
+  bool spelled;         // its requests spell each number in one of the forms the protocol allows, not only the
+                        // shortest (formats/spelling.hpp): the wire family
   std::uint64_t steps;  // steps_to_decide
   const char* aim;      // what it aims at, in a line: the boundary it reaches, the wrong step it catches
   // Its construction: a small family's world, drawn inside rc::gen::exec (`literal`: for the literal profile);

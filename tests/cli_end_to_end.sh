@@ -248,14 +248,14 @@ families_lists_the_families_of_each_profile)
   "$circles" families >"$dir/resolved"
   "$circles" conform --families >"$dir/conform"
   cmp "$dir/resolved" "$dir/conform" || fail "conform --families lists other families: $(cat "$dir/conform")"
-  [ "$(wc -l <"$dir/resolved")" -eq 25 ] && [ "$(head -n 1 "$dir/resolved")" = lattice ] &&
+  [ "$(wc -l <"$dir/resolved")" -eq 26 ] && [ "$(head -n 1 "$dir/resolved")" = lattice ] &&
     [ "$(grep -c ' (big)$' "$dir/resolved")" -eq 8 ] && grep -qx 'sizes (big)' "$dir/resolved" ||
     fail "circles families: $(cat "$dir/resolved")"
   "$circles" families --profile literal >"$dir/literal"
-  [ "$(wc -l <"$dir/literal")" -eq 15 ] && ! grep -q 'duplicates\|zero-radius\|(big)' "$dir/literal" ||
+  [ "$(wc -l <"$dir/literal")" -eq 16 ] && ! grep -q 'duplicates\|zero-radius\|(big)' "$dir/literal" ||
     fail "circles families --profile literal: $(cat "$dir/literal")"
   # Each name listed is one --families takes.
-  "$circles" conform --engine double --cases 25 --families "$(tr '\n' , <"$dir/literal" | sed 's/,$//')" --profile literal \
+  "$circles" conform --engine double --cases 26 --families "$(tr '\n' , <"$dir/literal" | sed 's/,$//')" --profile literal \
     >/dev/null || fail "conform does not take the families listed"
   ;;
 version_and_help_say_what_the_program_is)

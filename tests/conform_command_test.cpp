@@ -51,13 +51,13 @@ void expect_exit_2(const ConformCommandOptions& options, const std::string& mess
   EXPECT_EQ(r.out, "");
 }
 
-// The double engine on 25 cases of seed 2: one round, a case of each of the 25 families of the resolved profile.
+// The double engine on 26 cases of seed 2: one round, a case of each of the 26 families of the resolved profile.
 ConformCommandOptions double_engine() {
   ConformCommandOptions options;
   options.engine = "double";
   options.engine_given = true;
   options.threads = 1;
-  options.cases = 25;
+  options.cases = 26;
   options.cases_given = true;
   options.seed = 2;
   return options;
@@ -67,7 +67,7 @@ ConformCommandOptions double_engine() {
 ConformCommandOptions silent_program() {
   ConformCommandOptions options;
   options.exec = "true";
-  options.cases = 25;
+  options.cases = 26;
   options.cases_given = true;
   options.seed = 2;
   return options;
@@ -112,7 +112,7 @@ TEST(ConformCommand, an_unknown_family_names_the_option_the_name_and_the_familie
   const std::string families =
       "lattice, random-doubles, tangency, ulp-nudge, tie-px, tie-p, tie-p-vx, tie-p-v, duplicates, incomparable, "
       "mutual-contacts, tangent-after-step, square-overflow, subnormals, cancellation, signed-zeros, zero-radius, "
-      "sizes, crowds, cell-crowds, radius-spread, long-rows, index-bits, order-borders, big-chains\n";
+      "wire, sizes, crowds, cell-crowds, radius-spread, long-rows, index-bits, order-borders, big-chains\n";
   ConformCommandOptions options = double_engine();
   options.families = "lattice,sideways";
   options.families_given = true;
@@ -135,12 +135,12 @@ TEST(ConformCommand, families_check_only_those_and_skip_the_others) {
   options.keep_going = true;
   const Printed r = run(options);
   EXPECT_EQ(r.status, 0) << r.err;
-  // Lattice's one case of the 25, its family's only case in one round.
+  // Lattice's one case of the 26, its family's only case in one round.
   EXPECT_EQ(first_line(r.out),
             "circles conform: the double engine conforms: 1 case, 1 step each, level exact, seed 2, resolved profile");
   EXPECT_NE(r.out.find("\n  lattice             1       passed\n"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("\n  random-doubles      0       skipped\n"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("\n  families: 1 passed, 24 skipped\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\n  families: 1 passed, 25 skipped\n"), std::string::npos) << r.out;
 }
 
 TEST(ConformCommand, an_unknown_engine_exits_2_listing_the_engines) {
@@ -183,7 +183,7 @@ TEST(ConformCommand, a_conforming_engine_exits_0_with_the_verdict_on_the_first_l
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.err, "");
   EXPECT_EQ(first_line(r.out),
-            "circles conform: the double engine conforms: 25 cases, 1 step each (2 for tangent-after-step, whose "
+            "circles conform: the double engine conforms: 26 cases, 1 step each (2 for tangent-after-step, whose "
             "boundary comes only at step 2; 10 for big-chains, so that what a program keeps between requests is used), "
             "level exact, seed 2, resolved profile");
 }
@@ -243,7 +243,7 @@ TEST(ConformCommand, a_family_listed_as_failing_that_passes_fails_the_run_with_i
   EXPECT_EQ(r.status, 1) << r.err;
   // --expect implies --keep-going: the table, then the unexpected pass after it.
   EXPECT_EQ(first_line(r.out),
-            "circles conform: the double engine does not conform: 25 cases, 1 step each (2 for tangent-after-step, whose "
+            "circles conform: the double engine does not conform: 26 cases, 1 step each (2 for tangent-after-step, whose "
             "boundary comes only at step 2; 10 for big-chains, so that what a program keeps between requests is used), "
             "level exact, seed 2, resolved profile");
   EXPECT_NE(r.out.find("\nlattice: unexpected pass (1 case checked): delete its line, " + options.expect + ":1\n"),
@@ -263,7 +263,7 @@ TEST(ConformCommand, a_report_is_written_whole_with_the_verdict) {
   EXPECT_EQ(report["verdict"], "conforms");
   EXPECT_EQ(report["candidate"], "the double engine");
   EXPECT_EQ(report["seed"], 2);
-  EXPECT_EQ(report["cases"], 25);
+  EXPECT_EQ(report["cases"], 26);
   EXPECT_NE(read(options.reports["--junit"]).find("<testsuite"), std::string::npos);
 }
 
@@ -285,7 +285,7 @@ TEST(ConformCommand, a_report_into_a_missing_directory_exits_2_and_leaves_no_fil
   const Printed r = run(options);
   EXPECT_EQ(r.status, 2);
   // The verdict was printed; the report could not be written.
-  EXPECT_EQ(first_line(r.out).rfind("circles conform: the double engine conforms: 25 cases", 0), 0u) << r.out;
+  EXPECT_EQ(first_line(r.out).rfind("circles conform: the double engine conforms: 26 cases", 0), 0u) << r.out;
   EXPECT_EQ(r.err.rfind("circles conform: --report " + options.reports["--report"] + ": cannot create ", 0), 0u) << r.err;
   EXPECT_TRUE(dir.files().empty());
 }

@@ -49,6 +49,14 @@ rejects_a_gallery_entry_with_exit_1)
   shift 2
   run_conform 1 --exec "$gallery $entry" "$@"
   ;;
+rejects_a_wrong_number_reader_with_exit_1)
+  # ARGS: KIND. tests/wrong_reader_candidate.py KIND, the exact step behind a reader that reads some spellings of
+  # docs/protocol.md wrong: default options (a random seed, printed), and the counterexample is the wire family's,
+  # whose requests alone hold an E or a number that underflows. A reader that cuts digits to 17 may be caught
+  # earlier: our shortest form of an integer above 10^17 (110680464442257309696.0) has more than 17 digits too.
+  run_conform 1 --exec "python3 $source_dir/tests/wrong_reader_candidate.py $1"
+  [ "$1" = truncate-17 ] || grep -q "(family wire)" "$dir/out" || fail "not caught by the wire family: $(cat "$dir/out")"
+  ;;
 gallery_candidate_exits_2_listing_the_entries_for_an_unknown_name)
   # ARGS: GALLERY_CANDIDATE.
   expect_exit 2 sh -c '"$1" no-such-mistake </dev/null >"$2" 2>&1' sh "$1" "$dir/out"
@@ -74,8 +82,8 @@ exits_2_naming_an_unknown_profile)
   ;;
 exits_2_when_too_few_cases_reach_every_family)
   run_conform 2 --cases 5 --seed 1
-  [ "$(cat "$dir/err")" = "circles conform: no case of the family tie-p was checked: each round of 25 cases \
-draws every family of the resolved profile once, and this run checked 5; raise --cases to at least 25 (seed 1)" ] ||
+  [ "$(cat "$dir/err")" = "circles conform: no case of the family tie-p was checked: each round of 26 cases \
+draws every family of the resolved profile once, and this run checked 5; raise --cases to at least 26 (seed 1)" ] ||
     fail "unexpected message: $(cat "$dir/err")"
   ;;
 saves_a_counterexample_and_replays_it_first)
@@ -114,7 +122,7 @@ writes_reports_for_ci_for_every_verdict)
 import json, sys, xml.etree.ElementTree as ET
 report, junit, verdict = json.load(open(sys.argv[1])), ET.parse(sys.argv[2]).getroot(), sys.argv[3]
 assert report["verdict"] == verdict, report["verdict"]
-assert junit.tag == "testsuites" and len(junit.findall("testsuite/testcase")) == len(report["families"]) == 25
+assert junit.tag == "testsuites" and len(junit.findall("testsuite/testcase")) == len(report["families"]) == 26
 failures = junit.findall("testsuite/testcase/failure")
 assert len(failures) == (verdict == "does not conform"), failures
 assert (report["counterexample"] is None) == (verdict != "does not conform")
@@ -127,7 +135,7 @@ PY
   check_reports "does not conform"
   run_conform 2 --cases 5 --timeout 0.2 --exec 'sleep 30' --report "$dir/r.json" --junit "$dir/r.xml"
   check_reports "cannot check"
-  run_conform 2 --engine double --cases 25 --report "$dir/no/such/r.json"
+  run_conform 2 --engine double --cases 26 --report "$dir/no/such/r.json"
   grep -q "^circles conform: --report $dir/no/such/r.json: cannot create " "$dir/err" || fail "$(cat "$dir/err")"
   [ ! -e "$dir/no" ] || fail "something was written"
   ;;
@@ -150,18 +158,18 @@ judges_nan_infinity_and_signed_zeros_in_every_field_and_step)
       for token in $tokens; do
         received=$token
         [ "$token" = 1e400 ] && received=Infinity
-        run_conform 1 --seed 1 --cases 25 --steps $steps --exec "$odd $field $token $when" --report "$dir/r.json"
+        run_conform 1 --seed 1 --cases 26 --steps $steps --exec "$odd $field $token $when" --report "$dir/r.json"
         [ "$(sed -n 3,4p "$dir/out")" = "  step $steps of $steps, circle 0, field $field: expected 0.0 (0x0p+0), got $received
   which decision: $decision" ] || fail "$field $token $when: $(cat "$dir/out")"
         python3 -c "import json, sys; d = json.load(open(sys.argv[1]))['counterexample']['difference']
 assert (d['field'], d['expected'], d['received']) == (sys.argv[2], 0.0, sys.argv[3]), d" "$dir/r.json" $field $received ||
           fail "$field $token $when: the report says otherwise"
       done
-      run_conform 0 --seed 1 --cases 25 --steps $steps --exec "$odd $field -0.0 $when"
+      run_conform 0 --seed 1 --cases 26 --steps $steps --exec "$odd $field -0.0 $when"
     done
   done
   # A NaN counterexample stored in the corpus and replayed keeps its NaN.
-  run_conform 1 --seed 1 --cases 25 --save "$dir/corpus" --exec "$odd py NaN every"
+  run_conform 1 --seed 1 --cases 26 --save "$dir/corpus" --exec "$odd py NaN every"
   run_conform 1 --cases 0 --save "$dir/corpus" --exec "$odd py NaN every"
   grep -q "^  step 1 of 1, circle 0, field py: expected 0.0 (0x0p+0), got NaN$" "$dir/out" || fail "$(cat "$dir/out")"
   ;;
@@ -181,8 +189,8 @@ gives_a_slow_program_the_time_its_speed_needs_and_stops_one_that_hangs)
   # 272 to 320) take longer than the 1 s floor, and the deadlines its earlier answers predict give them that time.
   # The same program hanging after 10 answers is stopped.
   slow="python3 $source_dir/tests/slow_candidate.py $circles 0.01"
-  run_conform 0 --cases 25 --seed 1 --timeout 1 --jobs 1 --exec "$slow"
-  run_conform 1 --cases 25 --seed 1 --timeout 1 --jobs 1 --exec "$slow 10"
+  run_conform 0 --cases 26 --seed 1 --timeout 1 --jobs 1 --exec "$slow"
+  run_conform 1 --cases 26 --seed 1 --timeout 1 --jobs 1 --exec "$slow 10"
   grep -q "^  step 1 of 1: no answer: the program hung$" "$dir/out" || fail "$(cat "$dir/out" "$dir/err")"
   grep -q "gave no answer to request 11 within " "$dir/out" || fail "$(cat "$dir/out" "$dir/err")"
   ;;
@@ -241,7 +249,7 @@ keeps_going_and_gates_on_an_expectation_file)
   run_conform 1 --keep-going --cases 1000 --seed 1 --exec "$naive" --write-expect "$dir/naive.expect" --svg "$dir/first.svg"
   grep -q "^picture: $dir/first.svg$" "$dir/out" && [ -s "$dir/first.svg" ] || fail "no picture: $(cat "$dir/out")"
   for family in lattice random-doubles tangency ulp-nudge tie-px tie-p tie-p-vx tie-p-v duplicates incomparable \
-      mutual-contacts square-overflow subnormals cancellation zero-radius sizes crowds cell-crowds radius-spread \
+      mutual-contacts square-overflow subnormals cancellation zero-radius wire sizes crowds cell-crowds radius-spread \
       index-bits order-borders big-chains; do
     grep -Eq "^  $family +[0-9]+ +failed at its [0-9]+(st|nd|rd|th) case; none asked after$" "$dir/out" ||
       fail "$family did not fail: $(cat "$dir/out")"
@@ -250,19 +258,19 @@ keeps_going_and_gates_on_an_expectation_file)
   for family in tangent-after-step signed-zeros long-rows; do
     grep -q "^  $family  *[0-9][0-9]*  *passed$" "$dir/out" || fail "$family did not pass: $(cat "$dir/out")"
   done
-  grep -q "^  families: 22 failed, 3 passed$" "$dir/out" || fail "no summary: $(cat "$dir/out")"
-  [ "$(grep -c "replay: circles conform --exec 'python3 $source_dir/examples/python/step_naive.py' --seed 1 --case" "$dir/out")" -eq 22 ] ||
+  grep -q "^  families: 23 failed, 3 passed$" "$dir/out" || fail "no summary: $(cat "$dir/out")"
+  [ "$(grep -c "replay: circles conform --exec 'python3 $source_dir/examples/python/step_naive.py' --seed 1 --case" "$dir/out")" -eq 23 ] ||
     fail "not a replay line per failure: $(cat "$dir/out")"
   # With the file it wrote, the naive example passes the gate.
   run_conform 0 --cases 1000 --seed 1 --exec "$naive" --expect "$dir/naive.expect"
-  grep -q "^  families: 22 expected failures, 3 passed$" "$dir/out" || fail "no expected failures: $(cat "$dir/out")"
+  grep -q "^  families: 23 expected failures, 3 passed$" "$dir/out" || fail "no expected failures: $(cat "$dir/out")"
   # A run that passes only through its expectation file says so, and never that the program conforms.
-  grep -q "^circles conform: the program \`$naive\` passes with 22 expected failures, 3 families pass: [0-9]* cases, " "$dir/out" ||
+  grep -q "^circles conform: the program \`$naive\` passes with 23 expected failures, 3 families pass: [0-9]* cases, " "$dir/out" ||
     fail "the first line does not say what passed: $(head -n 1 "$dir/out")"
   ! grep -q "conforms" "$dir/out" || fail "a run with expected failures says it conforms: $(head -n 1 "$dir/out")"
   # The exact example, with the same file: an unexpected pass for each line.
   run_conform 1 --cases 1000 --seed 1 --exec "python3 $source_dir/examples/python/step.py" --expect "$dir/naive.expect"
-  [ "$(grep -c ": unexpected pass (.* cases checked): delete its line, $dir/naive.expect:" "$dir/out")" -eq 22 ] ||
+  [ "$(grep -c ": unexpected pass (.* cases checked): delete its line, $dir/naive.expect:" "$dir/out")" -eq 23 ] ||
     fail "not 22 unexpected passes: $(cat "$dir/out")"
   # A wrong implementation whose failures the file does not list (float32 fails signed-zeros too).
   run_conform 1 --cases 1000 --seed 1 --exec "python3 $source_dir/examples/python/step_float32.py" \

@@ -15,7 +15,7 @@ circles, source = sys.argv[1], sys.argv[2]
 # starts 2.5 s late, so the run takes longer than 2 s however fast the machine is, and the progress line is
 # drawn at its first batch.
 naive = "sleep 2.5; exec python3 " + os.path.join(source, "examples/python/step_naive.py")
-command = [circles, "conform", "--seed", "1", "--cases", "25000", "--keep-going", "--families",
+command = [circles, "conform", "--seed", "1", "--cases", "26000", "--keep-going", "--families",
            "tangency,tangent-after-step,signed-zeros", "--exec", naive]
 
 
@@ -44,7 +44,7 @@ verdict = "circles conform: the program `" + naive + "` does not conform: "
 assert status == 1, (status, out)
 lines = re.findall(r"\r(\[[#.]{20}\] +\d+%  case \d+ of \d+[^\r]*)", out)
 assert lines, "no progress line: " + repr(out[:400])
-# 25000 cases are 1000 rounds of 25: 1000 cases of each of the 3 families.
+# 26000 cases are 1000 rounds of 26: 1000 cases of each of the 3 families.
 for line in lines:
     assert re.fullmatch(r"\[[#.]{20}\] +\d+%  case \d+ of 3000(  1 family failing)?( +\d+\.\d s left)? *", line), line
 assert any("  1 family failing" in line for line in lines), lines

@@ -250,7 +250,7 @@ TEST(conform, its_fast_reference_for_big_worlds_agrees_with_every_pair_tested) {
   // Above 64 circles conform's expected answer is the double engine's step, not step_all_pairs: with
   // step_all_pairs as the candidate, every case of the big families must conform, over chained steps too.
   FunctionCandidate all_pairs(testing::right_step);
-  Options options{{0}, 500, 22, 2, 0, 1, {}};
+  Options options{{0}, 520, 22, 2, 0, 1, {}};  // 20 rounds of the 26 families, 8 of them big
   for (const properties::Family f : properties::families(Profile::resolved))
     if (!properties::is_big(f)) options.skip.push_back(f);
   const Verdict v = check(all_pairs, options);
@@ -318,10 +318,10 @@ TEST(conform, chains_the_tangent_after_step_family_to_the_step_that_decides_its_
 }
 
 TEST(conform, shards_take_whole_rounds_of_every_family_without_overlap) {
-  // Cases come in rounds of one per family; shard i/n takes the rounds q with q mod n = i. With the 25
-  // families of the resolved profile, 110 cases are rounds 0 … 3 (25 each) and 10 cases of round 4: shard
+  // Cases come in rounds of one per family; shard i/n takes the rounds q with q mod n = i. With the 26
+  // families of the resolved profile, 110 cases are rounds 0 … 3 (26 each) and 6 cases of round 4: shard
   // 0/2 asks rounds 0, 2 and the partial 4, shard 1/2 rounds 1 and 3.
-  ASSERT_EQ(properties::families(Profile::resolved).size(), 25u);
+  ASSERT_EQ(properties::families(Profile::resolved).size(), 26u);
   std::uint64_t asked = 0;
   FunctionCandidate counting([&](const Circles& w) {
     ++asked;
@@ -332,12 +332,12 @@ TEST(conform, shards_take_whole_rounds_of_every_family_without_overlap) {
   const Verdict second_verdict = check(counting, Options{{0}, 110, 3, 1, 1, 2, {}});
   EXPECT_EQ(first_verdict.cases + second_verdict.cases, 110u);
   // One request per case, a second for each case of tangent-after-step (family 11, chained two steps) and a
-  // second and third for each of big-chains (family 24, chained three): 2 and 2 in shard 0, 2 and 2 in shard 1.
-  EXPECT_EQ(first, 60u + 2 + 2 * 2);
+  // second and third for each of big-chains (family 25, chained three): 2 and 2 in shard 0, 2 and 2 in shard 1.
+  EXPECT_EQ(first, 58u + 2 + 2 * 2);
   EXPECT_EQ(asked, 110u + 4 + 4 * 2);
-  // Each shard saw every family: two or three cases of each in shard 0 (the partial round's first 10 families).
+  // Each shard saw every family: two or three cases of each in shard 0 (the partial round's first 6 families).
   for (const FamilyResult& f : first_verdict.families)
-    EXPECT_EQ(f.checked, f.family < properties::Family::mutual_contacts ? 3u : 2u) << properties::name(f.family);
+    EXPECT_EQ(f.checked, f.family < properties::Family::tie_p_vx ? 3u : 2u) << properties::name(f.family);
 }
 
 TEST(conform, refuses_a_run_too_short_to_reach_every_family) {
@@ -345,13 +345,13 @@ TEST(conform, refuses_a_run_too_short_to_reach_every_family) {
   const Verdict short_run = check(engine_candidate, Options{{0}, 10, 3, 1, 0, 1, {}});
   EXPECT_EQ(short_run.outcome, Outcome::cannot_check);
   EXPECT_EQ(short_run.error,
-            "no case of the family mutual-contacts was checked: each round of 25 cases draws every family of the resolved "
-            "profile once, and this run checked 10; raise --cases to at least 25");
+            "no case of the family mutual-contacts was checked: each round of 26 cases draws every family of the resolved "
+            "profile once, and this run checked 10; raise --cases to at least 26");
   const Verdict sharded = check(engine_candidate, Options{{0}, 28, 3, 1, 1, 2, {}});
   EXPECT_EQ(sharded.outcome, Outcome::cannot_check);
   EXPECT_EQ(sharded.error,
-            "no case of the family ulp-nudge was checked: each round of 25 cases draws every family of the resolved "
-            "profile once, and this run (shard 1/2) checked 3; raise --cases to at least 50");
+            "no case of the family tangency was checked: each round of 26 cases draws every family of the resolved "
+            "profile once, and this run (shard 1/2) checked 2; raise --cases to at least 52");
   // Replaying one case is not a run over the families; nor need --cases reach it.
   const Verdict one = check(engine_candidate, Options{{0}, 1000, 3, 1, 0, 1, 1500});
   EXPECT_EQ(one.outcome, Outcome::conforms) << describe(one);
@@ -491,8 +491,9 @@ TEST(conform, refuses_a_save_directory_it_cannot_use_before_any_case) {
 class CrashesAfterItsFirstWrongAnswer : public FunctionCandidate {
  public:
   CrashesAfterItsFirstWrongAnswer() : FunctionCandidate(strict_intersect_step) {}
-  Answers answer_all(std::span<const Circles> worlds, std::uint64_t first_id) override {
-    Answers read = Candidate::answer_all(worlds, first_id);
+  Answers answer_all(std::span<const Circles> worlds, std::uint64_t first_id,
+                     std::span<const Spelling> spellings = {}) override {
+    Answers read = Candidate::answer_all(worlds, first_id, spellings);
     for (std::size_t i = 0; i + 1 < read.answers.size(); ++i) {
       const auto expected = properties::expected_step(worlds[i], Profile::resolved);
       if (std::holds_alternative<Circles>(expected) && std::get<Circles>(expected) != read.answers[i]) {

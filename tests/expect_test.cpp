@@ -39,7 +39,7 @@ TEST(expectations, refuse_entries_they_cannot_read_naming_the_file_and_line) {
             "x.expect:1: family: unknown family \"latice\"; the families of the resolved profile are lattice, "
             "random-doubles, tangency, ulp-nudge, tie-px, tie-p, tie-p-vx, tie-p-v, duplicates, incomparable, "
             "mutual-contacts, tangent-after-step, square-overflow, subnormals, cancellation, signed-zeros, "
-            "zero-radius, sizes, crowds, cell-crowds, radius-spread, long-rows, index-bits, order-borders, big-chains");
+            "zero-radius, wire, sizes, crowds, cell-crowds, radius-spread, long-rows, index-bits, order-borders, big-chains");
   EXPECT_EQ(error("lattice pass why\n"), "x.expect:1: expected \"fail\" after the family lattice, found \"pass\": FAMILY fail REASON");
   EXPECT_EQ(error("lattice fail   \n"), "x.expect:1: the entry for lattice gives no reason: FAMILY fail REASON");
   EXPECT_EQ(error("lattice fail a\n\ntangency fail b\nlattice fail c\n"),

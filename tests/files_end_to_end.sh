@@ -26,10 +26,10 @@ write() {
   trace) "$circles" run --steps 2 --threads 1 --trace "$2" ;;
   exact-trace) "$circles" run --steps 2 --threads 1 --engine exact --exact-trace "$2" ;;
   video) "$circles" run --steps 2 --video "$2" ;;
-  report) "$circles" conform --engine double --cases 25 --seed 1 --report "$2" ;;
-  junit) "$circles" conform --engine double --cases 25 --seed 1 --junit "$2" ;;
-  svg) "$circles" conform --exec cat --cases 25 --seed 1 --svg "$2" ;;
-  write-expect) "$circles" conform --exec cat --cases 25 --seed 1 --write-expect "$2" ;;
+  report) "$circles" conform --engine double --cases 26 --seed 1 --report "$2" ;;
+  junit) "$circles" conform --engine double --cases 26 --seed 1 --junit "$2" ;;
+  svg) "$circles" conform --exec cat --cases 26 --seed 1 --svg "$2" ;;
+  write-expect) "$circles" conform --exec cat --cases 26 --seed 1 --write-expect "$2" ;;
   merge) "$circles" report merge "$2" "$dir/shard.json" ;;
   vectors) "$circles" vectors --out "$2" --cases 5 --scenes "$source_dir/scenes" --scene-steps 1 ;;
   esac >"$dir/said" 2>"$dir/err"
@@ -56,7 +56,7 @@ starts_with() {
     fail "$2: $1 does not hold it: $(head -c 100 "$1" | od -An -c | head -n 2)"
 }
 
-shard() { "$circles" conform --engine double --cases 25 --seed 1 --report "$dir/shard.json" >/dev/null; }
+shard() { "$circles" conform --engine double --cases 26 --seed 1 --report "$dir/shard.json" >/dev/null; }
 
 case $case_name in
 every_output_renames_over_a_file_and_writes_through_a_link_in_its_targets_directory)
@@ -148,12 +148,12 @@ dash_is_stdout_for_every_output_and_stdin_for_every_input)
   grep -q '^circles check-trace: <stdin>: agrees with the correctly rounded step at each of its 2 steps' "$dir/out" ||
     fail "check-trace -: $(cat "$dir/out")"
   cat "$dir/trace.jsonl" | "$circles" check-trace - >"$dir/out" || fail "check-trace - from a pipe: $(cat "$dir/out")"
-  printf 'tangency fail a reason\n' | "$circles" conform --engine double --cases 25 --seed 1 --expect - >"$dir/out" ||
+  printf 'tangency fail a reason\n' | "$circles" conform --engine double --cases 26 --seed 1 --expect - >"$dir/out" ||
     [ $? -eq 1 ]
   grep -q '^tangency: unexpected pass (1 case checked): delete its line, <stdin>:1$' "$dir/out" ||
     fail "conform --expect -: $(cat "$dir/out")"
   "$circles" report merge "$dir/merged.json" - <"$dir/shard.json" >"$dir/out"
-  grep -q "^circles report merge: $dir/merged.json: the double engine .*conforms: 25 cases of seed 1 in 1 report$" "$dir/out" ||
+  grep -q "^circles report merge: $dir/merged.json: the double engine .*conforms: 26 cases of seed 1 in 1 report$" "$dir/out" ||
     fail "report merge -: $(cat "$dir/out")"
   ;;
 a_name_of_stdout_is_written_through_stdout)

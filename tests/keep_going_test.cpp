@@ -109,7 +109,7 @@ TEST(keep_going, refuses_an_unknown_family_listing_the_known_ones) {
             "--families: unknown family \"sideways\"; the families of the resolved profile are lattice, "
             "random-doubles, tangency, ulp-nudge, tie-px, tie-p, tie-p-vx, tie-p-v, duplicates, incomparable, "
             "mutual-contacts, tangent-after-step, square-overflow, subnormals, cancellation, signed-zeros, "
-            "zero-radius, sizes, crowds, cell-crowds, radius-spread, long-rows, index-bits, order-borders, big-chains");
+            "zero-radius, wire, sizes, crowds, cell-crowds, radius-spread, long-rows, index-bits, order-borders, big-chains");
 }
 
 }  // namespace

@@ -37,13 +37,13 @@ inline std::set<std::string> with_status(const conform::Verdict& v, conform::Fam
   return names;
 }
 
-// The 22 families the naive step's two mistakes reach in seed 1's 1000 cases: every one but tangent-after-step,
+// The 23 families the naive step's two mistakes reach in seed 1's 1000 cases: every one but tangent-after-step,
 // signed-zeros and long-rows, on whose worlds there its answers are the nearest doubles.
 inline const std::set<std::string> kNaiveFails = {"lattice",    "random-doubles", "tangency",        "ulp-nudge",
                                                   "tie-px",     "tie-p",          "tie-p-vx",        "tie-p-v",
                                                   "duplicates", "incomparable",   "mutual-contacts", "square-overflow",
-                                                  "subnormals", "cancellation",   "zero-radius",     "sizes",
-                                                  "crowds",     "cell-crowds",    "radius-spread",   "index-bits",
-                                                  "order-borders", "big-chains"};
+                                                  "subnormals", "cancellation",   "zero-radius",     "wire",
+                                                  "sizes",      "crowds",         "cell-crowds",     "radius-spread",
+                                                  "index-bits", "order-borders",  "big-chains"};
 
 }  // namespace circles::testing

@@ -53,9 +53,13 @@ Circles infinite_px(const Circles& w) {
   return out;
 }
 
+// The families of the resolved profile, and the cases of 14 rounds of them, which verdict_of checks.
+const std::uint64_t kFamilies = properties::families(properties::Profile::resolved).size();
+const std::uint64_t kCases = 14 * kFamilies;
+
 Verdict verdict_of(const std::function<Circles(const Circles&)>& step, std::uint64_t shard = 0, std::uint64_t shards = 1) {
   FunctionCandidate candidate(step, "the function <&\"'>");  // a name to escape in XML
-  Options options{{0}, 350, 9, 1, shard, shards, {}};
+  Options options{{0}, kCases, 9, 1, shard, shards, {}};
   return conform::check(candidate, options);
 }
 
@@ -74,13 +78,13 @@ TEST(report, writes_a_conforming_verdict_as_json_with_the_cases_of_each_family) 
   EXPECT_EQ(r["format"], "circles-conform-report/1");
   EXPECT_EQ(r["verdict"], "conforms");
   EXPECT_TRUE(r["error"].is_null());
-  EXPECT_EQ(r["cases"], 350);
+  EXPECT_EQ(r["cases"], kCases);
   EXPECT_EQ(r["seed"], 9);
   EXPECT_EQ(r["shard"], "0/1");
   EXPECT_TRUE(r["counterexample"].is_null());
-  ASSERT_EQ(r["families"].size(), 25u);
+  ASSERT_EQ(r["families"].size(), kFamilies);
   for (const auto& [family, count] : r["families"].items()) {
-    EXPECT_EQ(count, 14) << family;  // 350 cases, 14 rounds of the 25 families
+    EXPECT_EQ(count, 14) << family;  // 14 rounds of the families
     EXPECT_EQ(r["family_status"][family], "passed") << family;
   }
 }
@@ -99,13 +103,13 @@ TEST(report, marks_an_interrupted_check_in_json_junit_and_the_merge_and_exits_12
   ASSERT_EQ(v.outcome, Outcome::interrupted) << v.error;
   EXPECT_EQ(v.signal, SIGINT);
   EXPECT_GT(v.cases, 0u);
-  EXPECT_LT(v.cases, 350u);
-  EXPECT_EQ(v.rerun, "circles conform --seed 9 --cases 350 --level exact");
+  EXPECT_LT(v.cases, kCases);
+  EXPECT_EQ(v.rerun, "circles conform --seed 9 --cases " + std::to_string(kCases) + " --level exact");
   const nlohmann::json r = json_of(v);
   EXPECT_EQ(r["verdict"], "interrupted");
   EXPECT_EQ(r["error"], "interrupted by SIGINT");
   EXPECT_EQ(r["cases"], v.cases);
-  EXPECT_EQ(r["family_status"].size(), 25u);
+  EXPECT_EQ(r["family_status"].size(), kFamilies);
 
   pugi::xml_document doc;
   ASSERT_TRUE(doc.load_string(junit_report(v, "").c_str()));
@@ -117,8 +121,8 @@ TEST(report, marks_an_interrupted_check_in_json_junit_and_the_merge_and_exits_12
       EXPECT_EQ(std::string(error.attribute("type").value()), "interrupted");
       EXPECT_EQ(std::string(error.attribute("message").value()), "interrupted by SIGINT");
     }
-  EXPECT_EQ(errors, 25u);  // none of the families was checked to its share of the cases
-  EXPECT_EQ(suite.attribute("errors").as_int(), 25);
+  EXPECT_EQ(errors, kFamilies);  // none of the families was checked to its share of the cases
+  EXPECT_EQ(suite.attribute("errors").as_uint(), kFamilies);
 
   std::ostringstream out, err;
   EXPECT_EQ(print_verdict(v, "", out, err), 128 + SIGINT);
@@ -194,8 +198,8 @@ TEST(report, writes_junit_xml_with_one_testcase_per_family_and_the_failure_in_it
     }
     skipped += static_cast<bool>(testcase.child("skipped"));
   }
-  EXPECT_EQ(cases, 25);
-  EXPECT_EQ(names.size(), 25u);
+  EXPECT_EQ(cases, static_cast<int>(kFamilies));
+  EXPECT_EQ(names.size(), kFamilies);
   EXPECT_EQ(failures, 1);
   EXPECT_EQ(suite.attribute("tests").as_int(), cases);
   EXPECT_EQ(suite.attribute("failures").as_int(), failures);

@@ -2,8 +2,10 @@
 """A correct candidate for `circles conform`: the resolved step in exact rationals.
 
 Speaks the step protocol (docs/protocol.md): one request per line on stdin, {"id": N, "circles": [[px, py, vx,
-vy, r], ...]}, one answer per line on stdout. Fraction(x) of a float is its exact value; float(Fraction) rounds
-to the nearest double, ties to even (CPython divides the integers exactly rounded), as the protocol requires.
+vy, r], ...]}, one answer per line on stdout. json gives an integer token as an int, which the protocol reads as
+its nearest double (9007199254740993 is 2^53): float(x) is that double, and Fraction of a float is its exact value;
+float(Fraction) rounds to the nearest double, ties to even (CPython divides the integers exactly rounded), as the
+protocol requires.
 It tests every pair, O(n²): about 0.25 µs a pair here, so a world of 4097 circles takes some 4 s.
 """
 import json
@@ -25,7 +27,7 @@ def nearest(p, v):
 def step(world, advance=nearest):
     """(1): every circle from the old world; the least contact is lexicographic on (px, py, vx, vy, r), then index.
     advance(p, v) gives each new position from the exact p and v."""
-    w = [[Fraction(x) for x in circle] for circle in world]
+    w = [[Fraction(float(x)) for x in circle] for circle in world]
     # Every double is an integer over a power of two, so at the largest denominator D of the world's positions and
     # radii they are all integers: (3) on them is (3) on the exact values, scaled by D², and integers are some 30
     # times faster than Fractions, which matters in a world of thousands of circles.

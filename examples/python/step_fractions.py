@@ -13,7 +13,7 @@ strict = sys.argv[1:] == ["strict"]
 
 
 def step(world):
-    w = [[Fraction(x) for x in c] for c in world]
+    w = [[Fraction(float(x)) for x in c] for c in world]  # an int token means its nearest double
     out = []
     for i, a in enumerate(w):
         least = None

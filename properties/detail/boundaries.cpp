@@ -431,3 +431,36 @@ Circles random_doubles(bool positive) {
 }
 
 }  // namespace circles::properties::detail
+
+namespace circles::properties::detail {
+
+// 2 … 8 circles whose every field is a value with many spellings (formats/spelling.hpp, which conform sends for
+// this family): zeros, which a request may spell 1e-400; the least and the largest subnormals and DBL_MIN;
+// decimals that no double is (0.1, 1/3, 1e23); integers around 2^53 and beyond 2^64; DBL_MAX; and any double
+// with 53 bits. Circles far apart keep each one's numbers in its answer (copied, or in p + v/60), so that a
+// number read wrong is a number answered wrong. A velocity whose sign would carry a position beyond 2^1020
+// over DBL_MAX is turned back, so that every world has a next one.
+Circles wire(bool positive) {
+  const rc::Gen<double> magnitude = weighted_one_of<double>(
+      {{3, element_of<double>({0.0})},
+       {3, element_of<double>({std::numeric_limits<double>::denorm_min(), 0x1p-1022 - 0x1p-1074, 0x1p-1022, 0.1,
+                               1.0 / 3, 1.0 / 60, 60, 0x1p53, 0x1p53 + 2, 0x1p64, 1e21, 1e22, 1e23, 1e300,
+                               std::numeric_limits<double>::max()})},
+       {1, subnormal()},
+       {2, physics()},
+       {1, binade()}});
+  const rc::Gen<double> field = either_sign(magnitude);
+  Circles w;
+  for (int n = pick<int>(2, 8, 2); n > 0; --n) {
+    CircleDoubles c{};
+    for (double& x : c) x = *field;
+    c[r] = std::fabs(c[r]);
+    if (c[r] == 0 && (positive || flip())) c[r] = positive ? 1.0 : -0.0;
+    for (const Field p : {px, py})
+      if (std::fabs(c[p]) >= 0x1p1020 && std::signbit(c[p]) == std::signbit(c[p + 2])) c[p + 2] = -c[p + 2];
+    w.push_back(c);
+  }
+  return w;
+}
+
+}  // namespace circles::properties::detail

@@ -28,6 +28,7 @@ Circles subnormals(bool literal);
 Circles cancellation(bool literal);
 Circles signed_zeros(bool literal);
 Circles zero_radius(bool literal);  // resolved only: `literal` is never true
+Circles wire(bool literal);
 
 // ── The big families (detail/big_worlds.cpp) ───────────────────────────────────────────────────────────
 // The world of the family's round-th case, at most `max` circles, from the case's random stream `draw`.
