@@ -92,7 +92,7 @@ TEST(big_world, is_a_family_of_the_resolved_profile_only_and_is_big) {
     EXPECT_NE(std::find(resolved.begin(), resolved.end(), family), resolved.end());
   }
   EXPECT_FALSE(properties::is_big(Family::zero_radius));
-  EXPECT_EQ(properties::steps_to_decide(Family::big_chains), 3u);
+  EXPECT_EQ(properties::steps_to_decide(Family::big_chains), 10u);
 }
 
 TEST(sizes, crosses_every_power_of_two_from_16_to_4096_in_its_first_nine_rounds_then_each_side_of_them) {

@@ -314,7 +314,7 @@ TEST(family_rows, hold_one_construction_each_and_the_profiles_read_them) {
   EXPECT_EQ(properties::families(Profile::literal).size(), literal);
   EXPECT_EQ(big, 8u);
   EXPECT_EQ(properties::steps_to_decide(Family::tangent_after_step), 2u);
-  EXPECT_EQ(properties::steps_to_decide(Family::big_chains), 3u);
+  EXPECT_EQ(properties::steps_to_decide(Family::big_chains), 10u);
   EXPECT_FALSE(properties::row(Family::zero_radius).literal);
   EXPECT_FALSE(properties::row(Family::duplicates).literal);
 }

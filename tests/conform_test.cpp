@@ -331,10 +331,10 @@ TEST(conform, shards_take_whole_rounds_of_every_family_without_overlap) {
   const std::uint64_t first = asked;
   const Verdict second_verdict = check(counting, Options{{0}, 110, 3, 1, 1, 2, {}});
   EXPECT_EQ(first_verdict.cases + second_verdict.cases, 110u);
-  // One request per case, a second for each case of tangent-after-step (family 11, chained two steps) and a
-  // second and third for each of big-chains (family 25, chained three): 2 and 2 in shard 0, 2 and 2 in shard 1.
-  EXPECT_EQ(first, 58u + 2 + 2 * 2);
-  EXPECT_EQ(asked, 110u + 4 + 4 * 2);
+  // One request per case, a second for each case of tangent-after-step (family 11, chained two steps) and nine
+  // more for each of big-chains (family 25, chained ten): 2 and 2 in shard 0, 2 and 2 in shard 1.
+  EXPECT_EQ(first, 58u + 2 + 2 * 9);
+  EXPECT_EQ(asked, 110u + 4 + 4 * 9);
   // Each shard saw every family: two or three cases of each in shard 0 (the partial round's first 6 families).
   for (const FamilyResult& f : first_verdict.families)
     EXPECT_EQ(f.checked, f.family < properties::Family::tie_p_vx ? 3u : 2u) << properties::name(f.family);
