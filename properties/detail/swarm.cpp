@@ -1,7 +1,8 @@
 // The swarm (swarm testing: Groce, Zhang, Eide, Chen and Regehr, ISSTA 2012): the worlds of a budget run's ladder
 // (the sizes and big_chains families at a rung, properties/boundaries.hpp), each of which draws its own subset of
 // features, so that a program's big-world path (its grid, filters, threads) meets combinations nobody listed:
-//   - a radius law: equal; not powers of two; powers of two; spread over 2^±40; a few giants;
+//   - a radius law: equal; not powers of two; powers of two; spread over 2^±40; a few giants; about a typical
+//     radius that is a power of two or not;
 //   - a frame: unit scale; 2^±20 … 2^±40; near 2^1000 or near the subnormals (these two only in worlds of up to
 //     kExtremeCircles circles, where conform's reference stays fast), or in the subnormals themselves (a ladder's
 //     first stage has one world in them and one near 2^1000: Frame); offset by a value that is not dyadic, or
@@ -58,7 +59,9 @@ Circles scaled(Circles w, int j) {
 
 Circles swarm(std::size_t n, Draw& draw, Frame frame) {
   const auto coin = [&draw] { return draw.below(2) == 0; };
-  // The frame: the typical radius r0 = 2^e.
+  // The frame: the typical radius r0 = m·2^e, m = 1 or (in half the worlds) 1 + j/8 for j = 1 … 7, so that the
+  // largest radius is often not a power of two, as in most worlds people write (a grid's cell side is then no
+  // power of two either), while a lattice of spacing 2·r0 stays exact.
   int e = static_cast<int>(draw.between(-6, 6));
   const bool extreme = n <= kExtremeCircles;
   switch (extreme && frame == Frame::huge ? 3 : extreme && frame == Frame::subnormal ? 5 : draw.below(extreme ? 5 : 3)) {
@@ -66,12 +69,12 @@ Circles swarm(std::size_t n, Draw& draw, Frame frame) {
     case 3: e = static_cast<int>(draw.between(960, 990)); break;       // near 2^1000
     case 4: e = static_cast<int>(draw.between(-1040, -1010)); break;  // near the subnormals
     // In them: for n <= kExtremeCircles every centre below is within 2^27·r0 of the origin (the non-dyadic
-    // offset, at most 2^20 / 3 spans of 2^7·r0, is the farthest), so below 2^-1023 < DBL_MIN, and so is nearly
-    // every next position (a step moves a circle at most 2·r0).
+    // offset, at most 2^20 / 3 spans of 2^7·r0, is the farthest), and r0 < 2^(e+1) <= 2^-1049, so below
+    // 2^-1022 = DBL_MIN, and so is nearly every next position (a step moves a circle at most 2·r0).
     case 5: e = static_cast<int>(draw.between(-1060, -1050)); break;
     default: break;
   }
-  const double r0 = std::ldexp(1.0, e);
+  const double r0 = std::ldexp(coin() ? 1.0 : 1 + static_cast<double>(draw.between(1, 7)) / 8, e);
   const bool full_bits = coin();
   const auto bits = [&](double x) { return full_bits ? x * (1 + unit(draw) * 0x1p-8) : x; };
   // The radius law.
