@@ -12,6 +12,7 @@
 //   - tangent pairs whose contact sits on a multiple of a likely cell side (the largest diameter, twice it, the
 //     power of two above it, 3 radii), negative multiples included, along an axis or along (±3, ±4) with
 //     numbers of up to 50 bits (whose squares round, where a filter's error bound decides), exact or an ulp apart;
+//   - pairs of the largest circles two cells apart for any cell side below their distance;
 //   - speeds: fast (up to a diameter a step) or slow;
 //   - duplicates and zero radii;
 //   - and, among the thousands of circles, worlds of the small families (tangencies within an ulp, ties on each
@@ -189,11 +190,34 @@ Circles swarm(std::size_t n, Draw& draw, Frame frame) {
   }
   // A circle that a frame near 2^1000 took past the double range, or whose next position would leave it, is
   // replaced by one at rest at the origin: the world stays one that conform can ask.
-  for (CircleDoubles& c : w) {
+  const auto in_range = [](const CircleDoubles& c) {
     bool finite = true;
     for (const double x : c) finite = finite && std::isfinite(x);
-    if (!finite || !(std::fabs(c[0]) + std::fabs(c[2]) < 0x1p1020) || !(std::fabs(c[1]) + std::fabs(c[3]) < 0x1p1020))
-      c = {0, 0, 0, 0, r0};
+    return finite && std::fabs(c[0]) + std::fabs(c[2]) < 0x1p1020 && std::fabs(c[1]) + std::fabs(c[3]) < 0x1p1020;
+  };
+  for (CircleDoubles& c : w)
+    if (!in_range(c)) c = {0, 0, 0, 0, r0};
+  // Last, pairs of the largest circles of the world as it now is, overlapping by 2^-20 of their distance, the
+  // first centre just below a multiple of the largest diameter rounded down to a power of two: their centres
+  // lie two cells apart for any cell side below their distance, where a grid that rounds its side down looks
+  // one cell too near. Each replaces two smaller circles, so that the largest radius stays what it was.
+  double largest = 0;
+  for (const CircleDoubles& c : w) largest = std::max(largest, c[4]);
+  const double cell = largest > 0 ? std::ldexp(1.0, std::ilogb(2 * largest)) : 0;
+  for (std::size_t p = 0; p < n / 64 && cell > 0 && std::isfinite(2 * largest); ++p) {
+    const double at = (std::round((ox + unit(draw) * side) / cell) + static_cast<double>(draw.between(-2, 2))) * cell;
+    const double across = oy + unit(draw) * side;
+    CircleDoubles a = circle(std::nextafter(at, -std::numeric_limits<double>::infinity()), across, largest);
+    CircleDoubles b = circle(a[0] + 2 * largest * (1 - 0x1p-20), across, largest);
+    if (coin()) {  // along y instead
+      std::swap(a[0], a[1]);
+      std::swap(b[0], b[1]);
+    }
+    const std::size_t i = draw.below(n), j = draw.below(n);
+    if (i != j && w[i][4] < largest && w[j][4] < largest && in_range(a) && in_range(b)) {
+      w[i] = a;
+      w[j] = b;
+    }
   }
   draw.shuffle(w);
   return w;
