@@ -3,6 +3,7 @@
 // replays exactly from its case and size, whatever the budget; and the verdict of a fixed schedule is the same
 // for any number of jobs.
 #include "conform/conform.hpp"
+#include "conform/deadline.hpp"
 #include "conform/ladder.hpp"
 #include "impl/engine.hpp"
 
@@ -10,6 +11,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -79,6 +81,19 @@ TEST(ladder, stops_a_quadratic_program_where_the_next_rung_would_pass_the_budget
   // Every stage after the first was predicted to fit with kMargin to spare, and the predictions were right.
   EXPECT_LE(spent, 60.0);
   EXPECT_GT(spent, 40.0);  // and the rest of the budget went to more stages at rungs that fit
+}
+
+TEST(ladder, a_stage_cut_ends_at_its_time_and_not_after_it_is_gone) {
+  throw_if_cut();  // no cut alive: nothing to end
+  {
+    const StageCut cut(std::chrono::steady_clock::now() + std::chrono::hours(1));
+    throw_if_cut();  // its time has not come
+  }
+  {
+    const StageCut cut(std::chrono::steady_clock::now());
+    EXPECT_THROW(throw_if_cut(), StageCutOff);
+  }
+  throw_if_cut();  // gone with its scope
 }
 
 TEST(ladder, predicts_from_the_growth_measured_over_the_last_two_rungs) {
