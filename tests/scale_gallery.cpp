@@ -252,28 +252,32 @@ Circles grown(Circles w, double skin) {
   return w;
 }
 
+// The candidate pairs a step kept from an earlier request, as looks over n circles.
+Looks kept_looks(const ScaleState& state, std::size_t n) {
+  Looks looks(n);
+  for (const auto& [i, j] : state.pairs) looks[i].push_back(j);
+  return looks;
+}
+
+// Keeps `looks`, the candidate pairs of a world of their count of circles, for a later request.
+void keep_looks(ScaleState& state, const Looks& looks) {
+  state.circles = looks.size();
+  state.pairs.clear();
+  for (std::size_t i = 0; i < looks.size(); ++i)
+    for (const std::size_t j : looks[i]) state.pairs.emplace_back(i, j);
+}
+
 Looks candidates(const Circles& w, const ScaleBugs& bugs, ScaleState& state) {
-  if (bugs.keeps_pairs && state.circles == w.size() && !state.pairs.empty()) {
-    Looks looks(w.size());
-    for (const auto& [i, j] : state.pairs) looks[i].push_back(j);
-    return looks;
-  }
+  if (bugs.keeps_pairs && state.circles == w.size() && !state.pairs.empty()) return kept_looks(state, w.size());
   if (bugs.verlet_skin > 0) {
     double largest = 0;
     for (const CircleDoubles& c : w) largest = std::max(largest, c[4]);
     const double skin = bugs.verlet_skin * largest;
     const bool keep = state.circles == w.size() && within_skin(w, state.last, skin);
     state.last = w;
-    Looks looks(w.size());
-    if (keep) {
-      for (const auto& [i, j] : state.pairs) looks[i].push_back(j);
-      return looks;
-    }
-    looks = size_classes(grown(w, skin));
-    state.circles = w.size();
-    state.pairs.clear();
-    for (std::size_t i = 0; i < looks.size(); ++i)
-      for (const std::size_t j : looks[i]) state.pairs.emplace_back(i, j);
+    if (keep) return kept_looks(state, w.size());
+    Looks looks = size_classes(grown(w, skin));
+    keep_looks(state, looks);
     return looks;
   }
   Looks looks = bugs.strips ? strips(w, bugs.strips)
@@ -297,12 +301,7 @@ Looks candidates(const Circles& w, const ScaleBugs& bugs, ScaleState& state) {
     }
     for (std::size_t i = 0; i < w.size(); ++i) std::erase_if(looks[i], [&](std::size_t j) { return upper[j] != upper[i]; });
   }
-  if (bugs.keeps_pairs) {
-    state.circles = w.size();
-    state.pairs.clear();
-    for (std::size_t i = 0; i < looks.size(); ++i)
-      for (const std::size_t j : looks[i]) state.pairs.emplace_back(i, j);
-  }
+  if (bugs.keeps_pairs) keep_looks(state, looks);
   return looks;
 }
 
